@@ -1,0 +1,58 @@
+// A rigid body: what it is (shape, mass, material) and where it is (state).
+#pragma once
+#include "physics/shape.h"
+
+#include <string>
+
+namespace impulse::physics {
+
+struct Material {
+  Real restitution = 0.5;  // coefficient of restitution e, 0..1
+  Real friction = 0.5;     // Coulomb coefficient mu, >= 0
+};
+
+// What a scene asks for. Mass comes from `mass` when > 0, else from density x volume.
+struct BodyDef {
+  std::string name;
+  Shape shape;
+  bool is_static = false;  // infinite mass; planes are always static
+  Real mass = 0;
+  Real density = 1000;     // kg/m^3
+  Material material;
+  Vec3 position = Vec3::Zero();
+  Quat orientation = Quat::Identity();
+  Vec3 velocity = Vec3::Zero();
+  Vec3 angular_velocity = Vec3::Zero();
+};
+
+struct Body {
+  std::string name;
+  Shape shape;
+  Material material;
+  Real mass = 0;       // 0 for static bodies
+  Real inv_mass = 0;
+  Mat3 inertia_local = Mat3::Zero();
+  Mat3 inv_inertia_local = Mat3::Zero();
+  Mat3 inv_inertia_world = Mat3::Zero();  // R I^-1 R^T, refreshed every step
+
+  Vec3 position = Vec3::Zero();
+  Quat orientation = Quat::Identity();
+  Vec3 velocity = Vec3::Zero();
+  Vec3 angular_velocity = Vec3::Zero();
+
+  bool is_static() const { return inv_mass == 0; }
+  void refresh_world_inertia() {
+    const Mat3 r = orientation.toRotationMatrix();
+    inv_inertia_world = r * inv_inertia_local * r.transpose();
+  }
+  Mat3 inertia_world() const {
+    const Mat3 r = orientation.toRotationMatrix();
+    return r * inertia_local * r.transpose();
+  }
+};
+
+// Builds a body from its definition. Throws std::invalid_argument with the reason for an
+// impossible definition (zero radius, negative mass, non-finite position, ...).
+Body make_body(const BodyDef& def);
+
+}  // namespace impulse::physics

@@ -1,0 +1,42 @@
+#include "physics/collide.h"
+
+#include <utility>
+
+namespace impulse::physics {
+
+namespace {
+
+int sphere_sphere(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
+  const Vec3 d = a.position - b.position;  // from B's centre to A's centre
+  const Real distance = d.norm();
+  const Real separation = distance - a.shape.radius - b.shape.radius;
+  if (separation > margin) return 0;
+  const Vec3 normal = distance > Real(1e-12) ? Vec3(d / distance) : Vec3::UnitY();
+  const Vec3 surface_a = a.position - normal * a.shape.radius;
+  const Vec3 surface_b = b.position + normal * b.shape.radius;
+  out.push_back({ia, ib, (surface_a + surface_b) / 2, normal, separation, 0});
+  return 1;
+}
+
+int sphere_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
+  const Vec3& n = b.shape.normal;
+  const Real height = n.dot(a.position) - b.shape.offset;  // centre above the plane
+  const Real separation = height - a.shape.radius;
+  if (separation > margin) return 0;
+  const Vec3 on_plane = a.position - n * height;
+  const Vec3 on_sphere = a.position - n * a.shape.radius;
+  out.push_back({ia, ib, (on_plane + on_sphere) / 2, n, separation, 0});
+  return 1;
+}
+
+}  // namespace
+
+int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
+  if (a.shape.type > b.shape.type) return collide(b, ib, a, ia, margin, out);
+  const ShapeType ta = a.shape.type, tb = b.shape.type;
+  if (ta == ShapeType::sphere && tb == ShapeType::sphere) return sphere_sphere(a, ia, b, ib, margin, out);
+  if (ta == ShapeType::sphere && tb == ShapeType::plane) return sphere_plane(a, ia, b, ib, margin, out);
+  return 0;  // pairs not supported yet collide with nothing
+}
+
+}  // namespace impulse::physics

@@ -1,0 +1,15 @@
+// Narrow phase: the contact points between two bodies' shapes.
+#pragma once
+#include "physics/body.h"
+#include "physics/contact.h"
+
+#include <vector>
+
+namespace impulse::physics {
+
+// Appends to `out` the contacts between bodies a and b (indices ia, ib) whose separation is below
+// `margin` (a positive margin yields speculative contacts). The appended contacts may have A and B
+// swapped so that A is the first shape in the order sphere, box, plane. Returns how many it added.
+int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
+
+}  // namespace impulse::physics

@@ -1,0 +1,57 @@
+#include "physics/shape.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace impulse::physics {
+
+const char* shape_name(ShapeType type) {
+  switch (type) {
+    case ShapeType::sphere: return "sphere";
+    case ShapeType::box: return "box";
+    case ShapeType::plane: return "plane";
+  }
+  return "?";
+}
+
+Real shape_volume(const Shape& shape) {
+  switch (shape.type) {
+    case ShapeType::sphere: return Real(4) / 3 * std::numbers::pi * std::pow(shape.radius, 3);
+    case ShapeType::box: return 8 * shape.half_extents.prod();
+    case ShapeType::plane: return 0;
+  }
+  return 0;
+}
+
+Mat3 shape_unit_inertia(const Shape& shape) {
+  switch (shape.type) {
+    case ShapeType::sphere: return Mat3::Identity() * (Real(2) / 5 * shape.radius * shape.radius);
+    case ShapeType::box: {
+      const Vec3 e2 = (2 * shape.half_extents).cwiseAbs2();
+      return Vec3(e2.y() + e2.z(), e2.x() + e2.z(), e2.x() + e2.y()).asDiagonal() * (Real(1) / 12);
+    }
+    case ShapeType::plane: return Mat3::Zero();
+  }
+  return Mat3::Zero();
+}
+
+std::string shape_problem(const Shape& shape) {
+  auto num = [](Real v) { return std::to_string(v); };
+  switch (shape.type) {
+    case ShapeType::sphere:
+      if (!(shape.radius > 0) || !std::isfinite(shape.radius)) return "radius must be a finite number > 0, got " + num(shape.radius);
+      return {};
+    case ShapeType::box:
+      if (!(shape.half_extents.minCoeff() > 0) || !is_finite(shape.half_extents))
+        return "half_extents must all be finite and > 0";
+      return {};
+    case ShapeType::plane:
+      if (!is_finite(shape.normal) || shape.normal.norm() < Real(1e-9)) return "normal must be a non-zero finite vector";
+      if (!std::isfinite(shape.offset)) return "offset must be finite";
+      return {};
+  }
+  return "unknown shape";
+}
+
+}  // namespace impulse::physics

@@ -1,0 +1,34 @@
+// Collision shapes and their mass properties.
+#pragma once
+#include "physics/math.h"
+
+#include <string>
+
+namespace impulse::physics {
+
+enum class ShapeType { sphere, box, plane };
+
+// A shape in its body's local frame. A plane is static only: the points x with
+// dot(normal, x) = offset, solid below (the side opposite the normal).
+struct Shape {
+  ShapeType type = ShapeType::sphere;
+  Real radius = 0.5;                   // sphere
+  Vec3 half_extents{0.5, 0.5, 0.5};    // box
+  Vec3 normal{0, 1, 0};                // plane, world space
+  Real offset = 0;                     // plane
+
+  static Shape sphere(Real r) { Shape s; s.type = ShapeType::sphere; s.radius = r; return s; }
+  static Shape box(const Vec3& h) { Shape s; s.type = ShapeType::box; s.half_extents = h; return s; }
+  static Shape plane(const Vec3& n, Real d) { Shape s; s.type = ShapeType::plane; s.normal = n; s.offset = d; return s; }
+};
+
+const char* shape_name(ShapeType type);
+
+// Volume and the inertia tensor of unit density about the centre, in the local frame.
+Real shape_volume(const Shape& shape);
+Mat3 shape_unit_inertia(const Shape& shape);  // multiply by mass
+
+// Why a shape is impossible ("radius must be > 0, got -1"), or empty when it is fine.
+std::string shape_problem(const Shape& shape);
+
+}  // namespace impulse::physics

@@ -1,0 +1,174 @@
+#include "physics/world.h"
+
+#include "physics/collide.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace impulse::physics {
+
+namespace {
+
+uint64_t contact_key(const Contact& c) {
+  return (uint64_t(uint32_t(c.body_a)) << 40) ^ (uint64_t(uint32_t(c.body_b)) << 16) ^ c.feature;
+}
+
+// Farthest a body's surface can travel in one step: bounds the speculative margin.
+Real motion_bound(const Body& body, Real dt) {
+  const Real reach = body.shape.type == ShapeType::box ? body.shape.half_extents.norm() : body.shape.radius;
+  return (body.velocity.norm() + body.angular_velocity.norm() * reach) * dt;
+}
+
+}  // namespace
+
+World::World(WorldSettings settings) : settings_(settings) {
+  if (!(settings_.time_step > 0)) throw std::invalid_argument("time_step must be > 0");
+  if (settings_.substeps < 1) throw std::invalid_argument("substeps must be >= 1");
+}
+
+int World::add_body(const BodyDef& def) {
+  bodies_.push_back(make_body(def));
+  return int(bodies_.size()) - 1;
+}
+
+const StepRecord& World::step() {
+  const Real dt = settings_.time_step;
+  const Real h = dt / settings_.substeps;
+
+  for (Body& body : bodies_) body.refresh_world_inertia();
+  find_contacts();
+  load_states();
+  contact_solver_.prepare(contacts_, bodies_, states_, settings_.contact, settings_.gravity, h);
+  auto& constraints = contact_solver_.constraints();
+  for (size_t i = 0; i < contacts_.size(); ++i) {
+    auto found = warm_impulses_.find(contact_key(contacts_[i]));
+    if (found == warm_impulses_.end()) continue;
+    constraints[i].normal_impulse = found->second.normal;
+    constraints[i].tangent_impulse1 = found->second.tangent1;
+    constraints[i].tangent_impulse2 = found->second.tangent2;
+  }
+
+  // Box2D v3's soft step: per sub-step, integrate velocities, warm start, solve with the soft
+  // position bias, integrate positions, then relax without bias. Restitution comes last.
+  for (int i = 0; i < settings_.substeps; ++i) {
+    integrate_velocities(h);
+    contact_solver_.warm_start(states_);
+    contact_solver_.solve(states_, 1 / h, true);
+    integrate_positions(h);
+    contact_solver_.solve(states_, 1 / h, false);
+    contact_solver_.end_substep();
+  }
+  contact_solver_.apply_restitution(states_);
+
+  store_states();
+  remember_impulses();
+  time_ += dt;
+  ++step_count_;
+  check_finite();
+  fill_record();
+  return record_;
+}
+
+void World::find_contacts() {
+  contacts_.clear();
+  const Real base_margin = 4 * settings_.linear_slop;
+  const Real dt = settings_.time_step;
+  for (int i = 0; i < int(bodies_.size()); ++i) {
+    for (int j = i + 1; j < int(bodies_.size()); ++j) {
+      const Body& a = bodies_[i];
+      const Body& b = bodies_[j];
+      if (a.is_static() && b.is_static()) continue;
+      collide(a, i, b, j, base_margin + motion_bound(a, dt) + motion_bound(b, dt), contacts_);
+    }
+  }
+}
+
+void World::load_states() {
+  states_.resize(bodies_.size());
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    const Body& body = bodies_[i];
+    BodyState& s = states_[i];
+    s.v = body.velocity;
+    s.w = body.angular_velocity;
+    s.dp.setZero();
+    s.dq = Quat::Identity();
+    s.inv_mass = body.inv_mass;
+    s.inv_inertia = body.inv_inertia_world;
+  }
+}
+
+void World::integrate_velocities(Real h) {
+  const Vec3 dv = settings_.gravity * h;
+  for (BodyState& s : states_)
+    if (s.inv_mass > 0) s.v += dv;
+}
+
+void World::integrate_positions(Real h) {
+  for (BodyState& s : states_) {
+    if (s.inv_mass == 0) continue;
+    s.dp += s.v * h;
+    // dq' = 1/2 (0, w) dq, one explicit step, renormalised.
+    const Quat spin(0, s.w.x() * h / 2, s.w.y() * h / 2, s.w.z() * h / 2);
+    s.dq.coeffs() += (spin * s.dq).coeffs();
+    s.dq.normalize();
+  }
+}
+
+void World::store_states() {
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    Body& body = bodies_[i];
+    if (body.is_static()) continue;
+    const BodyState& s = states_[i];
+    body.velocity = s.v;
+    body.angular_velocity = s.w;
+    body.position += s.dp;
+    body.orientation = (s.dq * body.orientation).normalized();
+  }
+}
+
+void World::remember_impulses() {
+  warm_impulses_.clear();
+  const auto& constraints = contact_solver_.constraints();
+  for (size_t i = 0; i < contacts_.size(); ++i) {
+    const ContactConstraint& c = constraints[i];
+    warm_impulses_[contact_key(contacts_[i])] = {c.normal_impulse, c.tangent_impulse1, c.tangent_impulse2};
+  }
+}
+
+void World::check_finite() const {
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    const Body& b = bodies_[i];
+    if (is_finite(b.position) && is_finite(b.orientation) && is_finite(b.velocity) && is_finite(b.angular_velocity)) continue;
+    throw std::runtime_error("body '" + b.name + "' (index " + std::to_string(i) + ") has a non-finite state after step " +
+                             std::to_string(step_count_) + " (t = " + std::to_string(time_) + " s)");
+  }
+}
+
+void World::fill_record() {
+  record_.step = step_count_;
+  record_.time = time_;
+  record_.contacts.clear();
+  const auto& constraints = contact_solver_.constraints();
+  for (size_t i = 0; i < contacts_.size(); ++i) {
+    const Contact& contact = contacts_[i];
+    const ContactConstraint& c = constraints[i];
+    if (contact.separation > settings_.linear_slop && c.total_normal_impulse == 0) continue;
+    record_.contacts.push_back({contact.body_a, contact.body_b, contact.point, contact.normal, contact.penetration(),
+                                c.total_normal_impulse,
+                                c.total_tangent_impulse1 * c.tangent1 + c.total_tangent_impulse2 * c.tangent2});
+  }
+  record_.kinetic_energy = 0;
+  record_.potential_energy = 0;
+  record_.linear_momentum.setZero();
+  record_.angular_momentum.setZero();
+  for (const Body& b : bodies_) {
+    if (b.is_static()) continue;
+    const Mat3 inertia = b.inertia_world();
+    record_.kinetic_energy += b.mass * b.velocity.squaredNorm() / 2 + b.angular_velocity.dot(inertia * b.angular_velocity) / 2;
+    record_.potential_energy -= b.mass * settings_.gravity.dot(b.position);
+    record_.linear_momentum += b.mass * b.velocity;
+    record_.angular_momentum += b.position.cross(b.mass * b.velocity) + inertia * b.angular_velocity;
+  }
+}
+
+}  // namespace impulse::physics

@@ -1,0 +1,63 @@
+// The world: bodies, settings, and the fixed-step loop that moves them.
+#pragma once
+#include "physics/body.h"
+#include "physics/contact.h"
+#include "physics/contact_solver.h"
+#include "physics/step_record.h"
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace impulse::physics {
+
+struct WorldSettings {
+  Vec3 gravity{0, -9.81, 0};
+  Real time_step = Real(1) / 60;   // s, fixed
+  int substeps = 4;                // solver sub-steps per step (Box2D v3's soft step)
+  Real linear_slop = 0.005;        // m; speculative contacts start 4 slops away
+  ContactSolverSettings contact;
+};
+
+class World {
+ public:
+  explicit World(WorldSettings settings = {});
+
+  // Adds a body and returns its index. Throws std::invalid_argument with the reason when the
+  // definition is impossible (negative mass, zero radius, ...).
+  int add_body(const BodyDef& def);
+
+  // Advances one fixed time step. Throws std::runtime_error naming the body when a body's state
+  // is no longer finite (NaN or infinity never reaches the caller's renderer).
+  const StepRecord& step();
+
+  const std::vector<Body>& bodies() const { return bodies_; }
+  Body& body(int index) { return bodies_.at(index); }
+  const WorldSettings& settings() const { return settings_; }
+  Real time() const { return time_; }
+  int64_t step_count() const { return step_count_; }
+  const StepRecord& last_record() const { return record_; }
+
+ private:
+  void find_contacts();
+  void load_states();
+  void integrate_velocities(Real h);
+  void integrate_positions(Real h);
+  void store_states();
+  void remember_impulses();
+  void check_finite() const;
+  void fill_record();
+
+  WorldSettings settings_;
+  std::vector<Body> bodies_;
+  std::vector<BodyState> states_;
+  std::vector<Contact> contacts_;
+  ContactSolver contact_solver_;
+  struct WarmImpulse { Real normal, tangent1, tangent2; };
+  std::unordered_map<uint64_t, WarmImpulse> warm_impulses_;  // last step's, by pair and feature
+  StepRecord record_;
+  Real time_ = 0;
+  int64_t step_count_ = 0;
+};
+
+}  // namespace impulse::physics

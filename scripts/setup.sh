@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages impulse needs, only those that are missing.
+# Idempotent and quiet when everything is already there. Runs apt-get as root or through sudo.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev                                   # math
+  libosmesa6-dev                                  # offscreen OpenGL (llvmpipe)
+  libpng-dev                                      # PNG frames
+  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # H.264 / MP4 (libx264 inside)
+  libtomlplusplus-dev                             # scene files
+  libcli11-dev                                    # command line
+  libcairo2-dev fonts-dejavu-core                 # 2D overlays and their font
+  libgtest-dev                                    # tests
+  libbullet-dev                                   # benchmark peer only
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+as_root=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "setup: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  as_root=(sudo)
+fi
+echo "setup: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+"${as_root[@]}" apt-get update -qq
+"${as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
