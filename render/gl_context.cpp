@@ -1,0 +1,44 @@
+#include "render/gl_context.h"
+
+#include <GL/osmesa.h>  // brings GL/gl.h; the rest of render/ uses GL/glcorearb.h instead
+
+#include <stdexcept>
+
+namespace impulse::render {
+
+GlContext::GlContext() : default_buffer_(kBufferSize * kBufferSize, 0u) {
+  const int attributes[] = {
+      OSMESA_FORMAT,                OSMESA_RGBA,
+      OSMESA_DEPTH_BITS,            24,
+      OSMESA_STENCIL_BITS,          0,
+      OSMESA_ACCUM_BITS,            0,
+      OSMESA_PROFILE,               OSMESA_CORE_PROFILE,
+      OSMESA_CONTEXT_MAJOR_VERSION, 4,
+      OSMESA_CONTEXT_MINOR_VERSION, 5,
+      0};
+  context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+  if (context_ == nullptr) {
+    throw std::runtime_error(
+        "OSMesa: cannot create an OpenGL 4.5 core profile context "
+        "(needs Mesa >= 20 with the llvmpipe driver; check GALLIUM_DRIVER is unset or llvmpipe)");
+  }
+  make_current();
+  const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  version_ = version != nullptr ? version : "";
+  renderer_ = renderer != nullptr ? renderer : "";
+}
+
+GlContext::~GlContext() {
+  if (OSMesaGetCurrentContext() == context_) OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  OSMesaDestroyContext(context_);
+}
+
+void GlContext::make_current() {
+  if (OSMesaGetCurrentContext() == context_) return;
+  if (!OSMesaMakeCurrent(context_, default_buffer_.data(), GL_UNSIGNED_BYTE, kBufferSize, kBufferSize)) {
+    throw std::runtime_error("OSMesa: cannot make the offscreen context current");
+  }
+}
+
+}  // namespace impulse::render

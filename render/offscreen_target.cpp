@@ -1,0 +1,83 @@
+#include "render/offscreen_target.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace impulse::render {
+namespace {
+
+// Checks the framebuffer bound to GL_FRAMEBUFFER.
+void require_complete(const char* what) {
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    char message[96];
+    std::snprintf(message, sizeof message, "OpenGL: %s framebuffer is incomplete (status 0x%04X)", what, status);
+    throw std::runtime_error(message);
+  }
+}
+
+}  // namespace
+
+OffscreenTarget::OffscreenTarget(int width, int height, int samples)
+    : width_(width), height_(height), samples_(samples) {
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+  if (width <= 0 || height <= 0 || width > max_size || height > max_size) {
+    throw std::runtime_error("renderer: frame size " + std::to_string(width) + "x" + std::to_string(height) +
+                             " is outside 1.." + std::to_string(max_size));
+  }
+  GLint max_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  samples_ = std::clamp(samples, 0, static_cast<int>(max_samples));
+
+  auto storage = [&](const GlRenderbuffer& renderbuffer, int sample_count, GLenum internal_format) {
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer.id());
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, sample_count, internal_format, width, height);
+  };
+  storage(multisample_colour_, samples_, GL_RGBA8);
+  storage(multisample_depth_, samples_, GL_DEPTH_COMPONENT24);
+  storage(resolved_colour_, 0, GL_RGBA8);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, multisample_framebuffer_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, multisample_colour_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, multisample_depth_.id());
+  require_complete("multisample");
+
+  glBindFramebuffer(GL_FRAMEBUFFER, resolved_framebuffer_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolved_colour_.id());
+  require_complete("resolve");
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+  bottom_up_pixels_.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+}
+
+void OffscreenTarget::bind_for_drawing() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, multisample_framebuffer_.id());
+  glViewport(0, 0, width_, height_);
+}
+
+void OffscreenTarget::resolve_into(Frame& frame) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_.id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_.id());
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_framebuffer_.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up_pixels_.data());
+
+  // GL's first row is the bottom one; Frame's is the top one.
+  frame.width = width_;
+  frame.height = height_;
+  frame.rgba.resize(bottom_up_pixels_.size());
+  const size_t row_bytes = static_cast<size_t>(width_) * 4;
+  for (int row = 0; row < height_; ++row) {
+    std::memcpy(frame.rgba.data() + static_cast<size_t>(row) * row_bytes,
+                bottom_up_pixels_.data() + static_cast<size_t>(height_ - 1 - row) * row_bytes, row_bytes);
+  }
+}
+
+}  // namespace impulse::render

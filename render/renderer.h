@@ -1,0 +1,38 @@
+// Draws a DrawList into an RGBA Frame with OpenGL 4.5 core on an offscreen OSMesa context:
+// shadowed, lit spheres, boxes and arrows over a gridded ground plane.
+// Each Renderer owns its own GL context; use it from one thread at a time.
+#pragma once
+#include <memory>
+
+#include "render/draw_list.h"
+#include "render/frame.h"
+
+namespace impulse::render {
+
+struct RendererSettings {
+  int samples = 4;              // multisample anti-aliasing; 0 turns it off
+  int shadow_map_size = 2048;   // 0 turns shadows off
+};
+
+class Renderer {
+ public:
+  // Throws std::runtime_error if the GL context or its framebuffers cannot be made.
+  Renderer(int width, int height, RendererSettings settings = {});
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // The returned frame is owned by the renderer and overwritten by the next draw().
+  // Throws std::invalid_argument if the camera's position equals its target.
+  const Frame& draw(const DrawList& draw_list);
+
+  int width() const;
+  int height() const;
+
+ private:
+  struct Gpu;  // every GL object, behind one pointer so this header stays free of GL
+  std::unique_ptr<Gpu> gpu_;
+  Frame frame_;
+};
+
+}  // namespace impulse::render

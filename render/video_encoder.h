@@ -1,0 +1,48 @@
+// Frames -> H.264 MP4 (yuv420p, BT.709 tags, faststart) through libavformat/libavcodec/libswscale.
+// The file appears under its name only after finish(); until then it is `path + ".part"`, and an
+// encoder destroyed before finish() (e.g. by an exception) deletes it.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "render/frame.h"
+
+namespace impulse::render {
+
+struct VideoSettings {
+  int width = 1280;   // both must be even (4:2:0 chroma)
+  int height = 720;
+  int fps = 30;
+  int crf = 20;       // x264 constant rate factor: 0 lossless .. 51 worst; ~18-23 looks clean
+  std::string preset = "veryfast";
+};
+
+class VideoEncoder {
+ public:
+  // Opens `path + ".part"` and writes the header. Throws std::invalid_argument for bad settings,
+  // std::runtime_error (with the path and FFmpeg's reason) for everything else.
+  VideoEncoder(std::string path, VideoSettings settings = {});
+  ~VideoEncoder();
+  VideoEncoder(const VideoEncoder&) = delete;
+  VideoEncoder& operator=(const VideoEncoder&) = delete;
+
+  // Frame i is shown at time i / fps. Throws std::invalid_argument if its size differs from the
+  // settings, std::logic_error after finish() or after an earlier error, std::runtime_error on
+  // FFmpeg errors.
+  void add_frame(const Frame& frame);
+
+  // Flushes the encoder, writes the trailer and renames the .part file to `path`. A second call
+  // does nothing.
+  void finish();
+
+  const std::string& path() const;
+  int64_t frame_count() const;
+  bool finished() const;
+
+ private:
+  struct State;  // FFmpeg objects, kept out of this header
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace impulse::render
