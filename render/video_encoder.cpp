@@ -1,6 +1,7 @@
 #include "render/video_encoder.h"
 
 extern "C" {
+#include <libavutil/log.h>
 #include <libavutil/opt.h>
 }
 
@@ -88,7 +89,11 @@ struct VideoEncoder::State {
     }
 
     error = avcodec_open2(codec.get(), encoder, nullptr);
-    if (error < 0) fail(std::string("cannot open encoder ") + encoder->name, error);
+    if (error < 0) {
+      fail(std::string("cannot open encoder ") + encoder->name + " (preset '" + settings.preset + "', crf " +
+               std::to_string(settings.crf) + ")",
+           error);
+    }
     error = avcodec_parameters_from_context(stream->codecpar, codec.get());
     if (error < 0) fail("cannot copy the encoder parameters", error);
     stream->time_base = codec->time_base;
@@ -143,6 +148,9 @@ struct VideoEncoder::State {
 
 VideoEncoder::VideoEncoder(std::string path, VideoSettings settings) {
   validate(settings);
+  // x264 and the mp4 muxer chat at info level on every file. Quieten FFmpeg's (global) log only
+  // if nobody has chosen a level yet.
+  if (av_log_get_level() == AV_LOG_INFO) av_log_set_level(AV_LOG_WARNING);
   state_ = std::make_unique<State>(std::move(path), std::move(settings));
   state_->open();  // on a throw, state_ closes everything and deletes the .part file
 }
@@ -177,6 +185,9 @@ void VideoEncoder::finish() {
   State& state = *state_;
   if (state.finished) return;
   state.require_usable("finish");
+  if (state.next_pts == 0) {
+    throw std::logic_error("video " + state.file.final_path() + ": finish() before any add_frame(); an mp4 needs frames");
+  }
   state.failed = true;
   state.encode(nullptr);
   int error = av_write_trailer(state.format.get());

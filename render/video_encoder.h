@@ -21,7 +21,8 @@ struct VideoSettings {
 class VideoEncoder {
  public:
   // Opens `path + ".part"` and writes the header. Throws std::invalid_argument for bad settings,
-  // std::runtime_error (with the path and FFmpeg's reason) for everything else.
+  // std::runtime_error (with the path and FFmpeg's reason) for everything else. The first encoder
+  // lowers FFmpeg's global log level from its default (info) to warning.
   VideoEncoder(std::string path, VideoSettings settings = {});
   ~VideoEncoder();
   VideoEncoder(const VideoEncoder&) = delete;
@@ -33,7 +34,8 @@ class VideoEncoder {
   void add_frame(const Frame& frame);
 
   // Flushes the encoder, writes the trailer and renames the .part file to `path`. A second call
-  // does nothing.
+  // does nothing. Throws std::logic_error if no frame was added (the .part file is then deleted
+  // with the encoder).
   void finish();
 
   const std::string& path() const;
