@@ -1,6 +1,5 @@
 #include "physics/world.h"
 
-#include "physics/collide.h"
 
 #include <stdexcept>
 #include <string>
@@ -11,12 +10,6 @@ namespace {
 
 uint64_t contact_key(const Contact& c) {
   return (uint64_t(uint32_t(c.body_a)) << 40) ^ (uint64_t(uint32_t(c.body_b)) << 16) ^ c.feature;
-}
-
-// Farthest a body's surface can travel in one step: bounds the speculative margin.
-Real motion_bound(const Body& body, Real dt) {
-  const Real reach = body.shape.type == ShapeType::box ? body.shape.half_extents.norm() : body.shape.radius;
-  return (body.velocity.norm() + body.angular_velocity.norm() * reach) * dt;
 }
 
 }  // namespace
@@ -70,17 +63,9 @@ const StepRecord& World::step() {
 }
 
 void World::find_contacts() {
-  contacts_.clear();
-  const Real base_margin = 4 * settings_.linear_slop;
-  const Real dt = settings_.time_step;
-  for (int i = 0; i < int(bodies_.size()); ++i) {
-    for (int j = i + 1; j < int(bodies_.size()); ++j) {
-      const Body& a = bodies_[i];
-      const Body& b = bodies_[j];
-      if (a.is_static() && b.is_static()) continue;
-      collide(a, i, b, j, base_margin + motion_bound(a, dt) + motion_bound(b, dt), contacts_);
-    }
-  }
+  awake_.resize(bodies_.size());
+  for (size_t i = 0; i < bodies_.size(); ++i) awake_[i] = !bodies_[i].is_static();
+  contact_finder_.find(bodies_, awake_, settings_.time_step, 4 * settings_.linear_slop, contacts_);
 }
 
 void World::load_states() {

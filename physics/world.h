@@ -2,6 +2,7 @@
 #pragma once
 #include "physics/body.h"
 #include "physics/contact.h"
+#include "physics/contact_finder.h"
 #include "physics/contact_solver.h"
 #include "physics/step_record.h"
 
@@ -52,6 +53,8 @@ class World {
   std::vector<Body> bodies_;
   std::vector<BodyState> states_;
   std::vector<Contact> contacts_;
+  std::vector<uint8_t> awake_;
+  ContactFinder contact_finder_;
   ContactSolver contact_solver_;
   struct WarmImpulse { Real normal, tangent1, tangent2; };
   std::unordered_map<uint64_t, WarmImpulse> warm_impulses_;  // last step's, by pair and feature

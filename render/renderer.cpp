@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -51,6 +52,17 @@ CameraMatrices camera_matrices(const Camera& camera, float aspect) {
           distance, far_distance};
 }
 
+// GL records errors instead of failing calls; one check per frame catches e.g. out-of-memory.
+void throw_on_gl_error(const char* during) {
+  const GLenum error = glGetError();
+  if (error == GL_NO_ERROR) return;
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  char message[80];
+  std::snprintf(message, sizeof message, "renderer: OpenGL error 0x%04X during %s", error, during);
+  throw std::runtime_error(message);
+}
+
 }  // namespace
 
 struct Renderer::Gpu {
@@ -75,6 +87,7 @@ struct Renderer::Gpu {
     ground_mesh.upload({Instance{}});  // the ground shader places the quad itself
     lit.set("u_shadow_map", static_cast<int>(kShadowTextureUnit));
     ground.set("u_shadow_map", static_cast<int>(kShadowTextureUnit));
+    throw_on_gl_error("setup");
   }
   ~Gpu() {
     try {
@@ -197,6 +210,7 @@ const Frame& Renderer::draw(const DrawList& draw_list) {
   gpu.head_mesh.draw();
 
   gpu.target.resolve_into(frame_);
+  throw_on_gl_error("draw");
   return frame_;
 }
 

@@ -1,0 +1,24 @@
+// Finds this step's contacts: a broad phase proposes pairs, the narrow phase (collide.h) gives
+// their contact points.
+#pragma once
+#include "physics/body.h"
+#include "physics/contact.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace impulse::physics {
+
+class ContactFinder {
+ public:
+  // Appends the contacts of every pair in which at least one body is awake (awake[i] != 0;
+  // static bodies are never awake) into `out` (cleared first). A pair's speculative margin is
+  // base_margin plus how far each body can move in dt.
+  void find(const std::vector<Body>& bodies, const std::vector<uint8_t>& awake, Real dt, Real base_margin,
+            std::vector<Contact>& out);
+};
+
+// Farthest a body's surface can travel in dt: bounds the speculative margin.
+Real motion_bound(const Body& body, Real dt);
+
+}  // namespace impulse::physics
