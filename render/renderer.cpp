@@ -111,8 +111,10 @@ const Frame& Renderer::draw(const DrawList& draw_list) {
 
   const float aspect = static_cast<float>(width()) / static_cast<float>(height());
   const CameraMatrices camera = camera_matrices(draw_list.camera, aspect);
-  Vec3f towards_light = draw_list.towards_light.normalized();
-  if (!towards_light.allFinite()) towards_light = DrawList{}.towards_light.normalized();
+  const float light_length = draw_list.towards_light.norm();
+  const Vec3f towards_light = std::isfinite(light_length) && light_length > 1e-6f
+                                  ? Vec3f(draw_list.towards_light / light_length)
+                                  : Vec3f(DrawList{}.towards_light.normalized());
 
   gpu.spheres.clear();
   gpu.boxes.clear();
