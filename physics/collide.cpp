@@ -1,12 +1,9 @@
+// Narrow phase dispatch, and the sphere pairs without a box.
 #include "physics/collide.h"
-
-#include <utility>
 
 namespace impulse::physics {
 
-namespace {
-
-int sphere_sphere(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
+int collide_spheres(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
   const Vec3 d = a.position - b.position;  // from B's centre to A's centre
   const Real distance = d.norm();
   const Real separation = distance - a.shape.radius - b.shape.radius;
@@ -18,7 +15,7 @@ int sphere_sphere(const Body& a, int ia, const Body& b, int ib, Real margin, std
   return 1;
 }
 
-int sphere_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
+int collide_sphere_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
   const Vec3& n = b.shape.normal;
   const Real height = n.dot(a.position) - b.shape.offset;  // centre above the plane
   const Real separation = height - a.shape.radius;
@@ -29,14 +26,24 @@ int sphere_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std:
   return 1;
 }
 
-}  // namespace
-
 int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
   if (a.shape.type > b.shape.type) return collide(b, ib, a, ia, margin, out);
-  const ShapeType ta = a.shape.type, tb = b.shape.type;
-  if (ta == ShapeType::sphere && tb == ShapeType::sphere) return sphere_sphere(a, ia, b, ib, margin, out);
-  if (ta == ShapeType::sphere && tb == ShapeType::plane) return sphere_plane(a, ia, b, ib, margin, out);
-  return 0;  // pairs not supported yet collide with nothing
+  using enum ShapeType;
+  switch (a.shape.type) {
+    case sphere:
+      switch (b.shape.type) {
+        case sphere: return collide_spheres(a, ia, b, ib, margin, out);
+        case box: return collide_sphere_box(a, ia, b, ib, margin, out);
+        case plane: return collide_sphere_plane(a, ia, b, ib, margin, out);
+      }
+      break;
+    case box:
+      if (b.shape.type == box) return collide_boxes(a, ia, b, ib, margin, out);
+      return collide_box_plane(a, ia, b, ib, margin, out);
+    case plane:
+      break;  // planes are static: two never meet
+  }
+  return 0;
 }
 
 }  // namespace impulse::physics

@@ -18,19 +18,6 @@ Real inverse_effective_mass(const BodyState& sa, const BodyState& sb, const Vec3
   return sa.inv_mass + sb.inv_mass + d.dot(ang_a + ang_b);
 }
 
-// Velocity of A's contact point relative to B's: v + w x r for each (eq. 11, corrected).
-Vec3 relative_velocity(const BodyState& sa, const BodyState& sb, const Vec3& ra, const Vec3& rb) {
-  return (sa.v + sa.w.cross(ra)) - (sb.v + sb.w.cross(rb));
-}
-
-// +P on A and -P on B, linear and angular (eq. 14, corrected: world inverse inertia, minus for B).
-void apply_impulse(BodyState& sa, BodyState& sb, const Vec3& ra, const Vec3& rb, const Vec3& impulse) {
-  sa.v += sa.inv_mass * impulse;
-  sa.w += sa.inv_inertia * ra.cross(impulse);
-  sb.v -= sb.inv_mass * impulse;
-  sb.w -= sb.inv_inertia * rb.cross(impulse);
-}
-
 Real safe_inverse(Real k) { return k > 0 ? 1 / k : 0; }
 
 // The normal velocity at which the surfaces meet, predicted from a sub-step that starts
@@ -94,8 +81,7 @@ void ContactSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_b
     BodyState& sb = states[c.b];
 
     // Separation now, from how far each body has moved and turned since the step began.
-    const Vec3 moved = (sa.dp - sb.dp) + (sa.dq * c.anchor_a - sb.dq * c.anchor_b);
-    const Real separation = moved.dot(c.normal) + c.adjusted_separation;
+    const Real separation = current_separation(c, sa, sb);
 
     Real bias = 0, mass_scale = 1, impulse_scale = 0;
     if (separation > 0) {

@@ -39,6 +39,12 @@ struct ContactConstraint {
   Real normal_acceleration = 0;        // of A relative to B along the normal, from gravity
 };
 
+// Separation now, from how far each body has moved and turned since the step began.
+inline Real current_separation(const ContactConstraint& c, const BodyState& sa, const BodyState& sb) {
+  const Vec3 moved = (sa.dp - sb.dp) + (sa.dq * c.anchor_a - sb.dq * c.anchor_b);
+  return moved.dot(c.normal) + c.adjusted_separation;
+}
+
 class ContactSolver {
  public:
   // Builds one constraint per contact. `warm` holds each contact's impulses from the last step

@@ -24,6 +24,12 @@ struct Shape {
 
 const char* shape_name(ShapeType type);
 
+// Corner `index` (0..7) of a box of half extents `half` centred on the origin: bits 0, 1, 2 of
+// the index set mean +x, +y, +z. Collision feature ids name corners by this index.
+inline Vec3 box_corner(const Vec3& half, int index) {
+  return {index & 1 ? half.x() : -half.x(), index & 2 ? half.y() : -half.y(), index & 4 ? half.z() : -half.z()};
+}
+
 // Volume and the inertia tensor of unit density about the centre, in the local frame.
 Real shape_volume(const Shape& shape);
 Mat3 shape_unit_inertia(const Shape& shape);  // multiply by mass

@@ -14,6 +14,20 @@ struct BodyState {
   Mat3 inv_inertia = Mat3::Zero();     // world space, fixed for the step
 };
 
+// Velocity of A's point at ra relative to B's point at rb: v + w x r for each (eq. 11, corrected).
+inline Vec3 relative_velocity(const BodyState& sa, const BodyState& sb, const Vec3& ra, const Vec3& rb) {
+  return (sa.v + sa.w.cross(ra)) - (sb.v + sb.w.cross(rb));
+}
+
+// +P on A at ra and -P on B at rb, linear and angular (eq. 14, corrected: the world-space inverse
+// inertia tensor, and minus for B).
+inline void apply_impulse(BodyState& sa, BodyState& sb, const Vec3& ra, const Vec3& rb, const Vec3& impulse) {
+  sa.v += sa.inv_mass * impulse;
+  sa.w += sa.inv_inertia * ra.cross(impulse);
+  sb.v -= sb.inv_mass * impulse;
+  sb.w -= sb.inv_inertia * rb.cross(impulse);
+}
+
 // Soft constraint coefficients (Box2D v3's b2Softness, from Erin Catto's "Solver2D" notes):
 // a spring of `hertz` with damping ratio `zeta`, solved implicitly over a sub-step of h seconds.
 struct Softness {

@@ -1,5 +1,7 @@
 #include "physics/world.h"
 
+#include "physics/teaching_methods.h"
+
 
 #include <stdexcept>
 #include <string>
@@ -32,6 +34,24 @@ const StepRecord& World::step() {
   find_contacts();
   load_states();
   contact_solver_.prepare(contacts_, bodies_, states_, settings_.contact, settings_.gravity, h);
+  switch (settings_.method) {
+    case ResponseMethod::impulse: solve_impulse(h); break;
+    case ResponseMethod::workshop: solve_workshop(dt); break;
+    case ResponseMethod::projection: solve_projection(dt); break;
+    case ResponseMethod::penalty: solve_penalty(h); break;
+  }
+
+  store_states();
+  time_ += dt;
+  ++step_count_;
+  check_finite();
+  fill_record();
+  return record_;
+}
+
+// Box2D v3's soft step: per sub-step, integrate velocities, warm start, solve with the soft
+// position bias, integrate positions, then relax without bias. Restitution comes last.
+void World::solve_impulse(Real h) {
   auto& constraints = contact_solver_.constraints();
   for (size_t i = 0; i < contacts_.size(); ++i) {
     auto found = warm_impulses_.find(contact_key(contacts_[i]));
@@ -40,9 +60,6 @@ const StepRecord& World::step() {
     constraints[i].tangent_impulse1 = found->second.tangent1;
     constraints[i].tangent_impulse2 = found->second.tangent2;
   }
-
-  // Box2D v3's soft step: per sub-step, integrate velocities, warm start, solve with the soft
-  // position bias, integrate positions, then relax without bias. Restitution comes last.
   for (int i = 0; i < settings_.substeps; ++i) {
     integrate_velocities(h);
     contact_solver_.warm_start(states_);
@@ -52,14 +69,29 @@ const StepRecord& World::step() {
     contact_solver_.end_substep();
   }
   contact_solver_.apply_restitution(states_);
-
-  store_states();
   remember_impulses();
-  time_ += dt;
-  ++step_count_;
-  check_finite();
-  fill_record();
-  return record_;
+}
+
+// Listing 1: respond to the contacts found at the start of the step, then move (one full step).
+void World::solve_workshop(Real dt) {
+  apply_workshop_impulses(contact_solver_.constraints(), states_, settings_.contact.friction);
+  integrate_velocities(dt);
+  integrate_positions(dt);
+}
+
+// Move, then push overlapping bodies apart. Velocities keep what gravity gave them.
+void World::solve_projection(Real dt) {
+  integrate_velocities(dt);
+  integrate_positions(dt);
+  project_apart(contact_solver_.constraints(), states_);
+}
+
+void World::solve_penalty(Real h) {
+  for (int i = 0; i < settings_.substeps; ++i) {
+    integrate_velocities(h);
+    apply_penalty_forces(contact_solver_.constraints(), states_, settings_.penalty, h);
+    integrate_positions(h);
+  }
 }
 
 void World::find_contacts() {

@@ -4,6 +4,7 @@
 #include "physics/contact.h"
 #include "physics/contact_finder.h"
 #include "physics/contact_solver.h"
+#include "physics/response_method.h"
 #include "physics/step_record.h"
 
 #include <cstdint>
@@ -17,7 +18,9 @@ struct WorldSettings {
   Real time_step = Real(1) / 60;   // s, fixed
   int substeps = 4;                // solver sub-steps per step (Box2D v3's soft step)
   Real linear_slop = 0.005;        // m; speculative contacts start 4 slops away
+  ResponseMethod method = ResponseMethod::impulse;
   ContactSolverSettings contact;
+  PenaltySettings penalty;
 };
 
 class World {
@@ -41,6 +44,10 @@ class World {
 
  private:
   void find_contacts();
+  void solve_impulse(Real h);
+  void solve_workshop(Real dt);
+  void solve_projection(Real dt);
+  void solve_penalty(Real h);
   void load_states();
   void integrate_velocities(Real h);
   void integrate_positions(Real h);

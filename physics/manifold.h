@@ -1,0 +1,41 @@
+// Contact manifolds: how a pair's points are named (feature ids) and cut down to four.
+#pragma once
+#include "physics/contact.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace impulse::physics {
+
+// A contact's `feature` names the pair of geometric features that made it, so that the same
+// point keeps its id from step to step while the same features touch (the world keys warm
+// starting on (body_a, body_b, feature)). Every id fits in 16 bits:
+//
+//   bits 14-15  kind
+//   kind 0  single point (sphere pairs: 0) or box corner against a plane: bits 0-2 = corner
+//   kind 1  face contact between boxes: bit 12 = reference box (0 = A, 1 = B), bits 9-11 =
+//           reference face, bits 0-6 = the clipped point: an incident box corner (0-7), or
+//           8 + 4 * edge + side, where the incident polygon's edge `edge` (0-11 an edge of the
+//           incident box, 12-15 a stretch along reference side plane 0-3) crosses side `side`
+//   kind 2  edge against edge: bits 0-3 = edge of A, bits 4-7 = edge of B
+//
+// Boxes number corners as box_corner() does, faces 2 * axis + (0 for +, 1 for -), and edges
+// 4 * axis + the two other corner bits in order (the edge along `axis` through those corners).
+namespace feature {
+inline constexpr uint32_t corner(int index) { return uint32_t(index); }
+inline constexpr uint32_t face_point(int reference_box, int reference_face, int point) {
+  return (1u << 14) | (uint32_t(reference_box) << 12) | (uint32_t(reference_face) << 9) | uint32_t(point);
+}
+inline constexpr uint32_t clip_point(int edge, int side) { return uint32_t(8 + 4 * edge + side); }
+inline constexpr uint32_t edge_pair(int edge_a, int edge_b) {
+  return (2u << 14) | (uint32_t(edge_b) << 4) | uint32_t(edge_a);
+}
+}  // namespace feature
+
+// Keeps at most four of the contacts out[first..] (one pair's, sharing `normal`): the deepest,
+// the one farthest from it, then the two that add the most area, in their original order. A
+// candidate displaces an earlier one only when clearly better, so that the choice does not
+// flicker between steps. Returns how many are left.
+int reduce_manifold(std::vector<Contact>& out, size_t first, const Vec3& normal);
+
+}  // namespace impulse::physics
