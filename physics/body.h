@@ -40,6 +40,9 @@ struct Body {
   Vec3 velocity = Vec3::Zero();
   Vec3 angular_velocity = Vec3::Zero();
 
+  bool awake = true;       // false while sleeping (at rest, not simulated until touched)
+  Real sleep_time = 0;     // s spent slower than the sleep tolerances
+
   bool is_static() const { return inv_mass == 0; }
   void refresh_world_inertia() {
     const Mat3 r = orientation.toRotationMatrix();
