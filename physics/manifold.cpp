@@ -76,7 +76,8 @@ int reduce_manifold(std::vector<Contact>& out, size_t first, const Vec3& normal)
 
   // Keep the survivors in their original order (the clip order), for a stable solve order.
   // (Ascending, so each moves down onto a slot it no longer needs.)
-  std::sort(keep.begin(), keep.begin() + kept);
+  for (int k = 1; k < kept; ++k)
+    for (int m = k; m > 0 && keep[m - 1] > keep[m]; --m) std::swap(keep[m - 1], keep[m]);
   for (int k = 0; k < kept; ++k) points[k] = points[keep[k]];
   out.resize(first + kept);
   return kept;
