@@ -42,6 +42,7 @@ const StepRecord& World::step() {
   }
 
   store_states();
+  islands_.update(bodies_, contacts_, links_, settings_.linear_slop, dt, settings_.sleep);
   time_ += dt;
   ++step_count_;
   check_finite();
@@ -86,18 +87,23 @@ void World::solve_projection(Real dt) {
   project_apart(contact_solver_.constraints(), states_);
 }
 
+// Semi-implicit Euler per sub-step: forces from the sub-step's starting state, then velocities,
+// then positions.
 void World::solve_penalty(Real h) {
   for (int i = 0; i < settings_.substeps; ++i) {
-    integrate_velocities(h);
     apply_penalty_forces(contact_solver_.constraints(), states_, settings_.penalty, h);
+    integrate_velocities(h);
     integrate_positions(h);
   }
 }
 
 void World::find_contacts() {
-  awake_.resize(bodies_.size());
-  for (size_t i = 0; i < bodies_.size(); ++i) awake_[i] = !bodies_[i].is_static();
-  contact_finder_.find(bodies_, awake_, settings_.time_step, 4 * settings_.linear_slop, contacts_);
+  // Contacts of awake bodies; a sleeping island they reach wakes, and then its own contacts count.
+  do {
+    awake_.resize(bodies_.size());
+    for (size_t i = 0; i < bodies_.size(); ++i) awake_[i] = !bodies_[i].is_static() && bodies_[i].awake;
+    contact_finder_.find(bodies_, awake_, settings_.time_step, 4 * settings_.linear_slop, contacts_);
+  } while (islands_.wake_touched(bodies_, contacts_, links_));
 }
 
 void World::load_states() {
@@ -109,8 +115,9 @@ void World::load_states() {
     s.w = body.angular_velocity;
     s.dp.setZero();
     s.dq = Quat::Identity();
-    s.inv_mass = body.inv_mass;
-    s.inv_inertia = body.inv_inertia_world;
+    // A sleeping body is not simulated: to the solver it is as good as static.
+    s.inv_mass = body.awake ? body.inv_mass : 0;
+    s.inv_inertia = body.awake ? body.inv_inertia_world : Mat3::Zero();
   }
 }
 
@@ -134,7 +141,7 @@ void World::integrate_positions(Real h) {
 void World::store_states() {
   for (size_t i = 0; i < bodies_.size(); ++i) {
     Body& body = bodies_[i];
-    if (body.is_static()) continue;
+    if (body.is_static() || !body.awake) continue;
     const BodyState& s = states_[i];
     body.velocity = s.v;
     body.angular_velocity = s.w;

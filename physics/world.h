@@ -3,6 +3,7 @@
 #include "physics/body.h"
 #include "physics/contact.h"
 #include "physics/contact_finder.h"
+#include "physics/island.h"
 #include "physics/contact_solver.h"
 #include "physics/response_method.h"
 #include "physics/step_record.h"
@@ -21,6 +22,7 @@ struct WorldSettings {
   ResponseMethod method = ResponseMethod::impulse;
   ContactSolverSettings contact;
   PenaltySettings penalty;
+  SleepSettings sleep;
 };
 
 class World {
@@ -62,6 +64,8 @@ class World {
   std::vector<Contact> contacts_;
   std::vector<uint8_t> awake_;
   ContactFinder contact_finder_;
+  Islands islands_;
+  std::vector<std::pair<int, int>> links_;  // body pairs joined by joints
   ContactSolver contact_solver_;
   struct WarmImpulse { Real normal, tangent1, tangent2; };
   std::unordered_map<uint64_t, WarmImpulse> warm_impulses_;  // last step's, by pair and feature

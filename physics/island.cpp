@@ -1,0 +1,91 @@
+#include "physics/island.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace impulse::physics {
+
+namespace {
+Real reach(const Body& body) {
+  return body.shape.type == ShapeType::box ? body.shape.half_extents.norm() : body.shape.radius;
+}
+bool is_dynamic(const Body& body) { return body.inv_mass > 0; }
+}  // namespace
+
+int Islands::find(int i) {
+  while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+  return i;
+}
+
+void Islands::join(int a, int b) {
+  a = find(a);
+  b = find(b);
+  if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+}
+
+void Islands::update(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+                     const std::vector<std::pair<int, int>>& links, Real touching_distance, Real dt,
+                     const SleepSettings& settings) {
+  const int n = int(bodies.size());
+  island_of_.resize(n, -1);
+  if (!settings.enabled) return;
+
+  // Sleep timers: the fastest point of the body must stay below the tolerance.
+  for (Body& body : bodies) {
+    if (!is_dynamic(body) || !body.awake) continue;
+    const Real speed = body.velocity.norm() + body.angular_velocity.norm() * reach(body);
+    body.sleep_time = speed > settings.velocity_tolerance ? 0 : body.sleep_time + dt;
+  }
+
+  // Islands of awake bodies, joined through touching contacts and links (static bodies join nothing).
+  parent_.resize(n);
+  std::iota(parent_.begin(), parent_.end(), 0);
+  for (const Contact& c : contacts)
+    if (c.separation < touching_distance && is_dynamic(bodies[c.body_a]) && is_dynamic(bodies[c.body_b]))
+      join(c.body_a, c.body_b);
+  for (const auto& [a, b] : links)
+    if (is_dynamic(bodies[a]) && is_dynamic(bodies[b])) join(a, b);
+
+  // An island sleeps when its most restless body has rested long enough.
+  std::vector<Real> least_rest(n, INFINITY);
+  for (int i = 0; i < n; ++i)
+    if (is_dynamic(bodies[i]) && bodies[i].awake) least_rest[find(i)] = std::min(least_rest[find(i)], bodies[i].sleep_time);
+  for (int i = 0; i < n; ++i) {
+    Body& body = bodies[i];
+    if (!is_dynamic(body) || !body.awake || least_rest[find(i)] < settings.time_to_sleep) continue;
+    body.awake = false;
+    body.velocity.setZero();
+    body.angular_velocity.setZero();
+    island_of_[i] = find(i);
+  }
+}
+
+void Islands::wake_island(std::vector<Body>& bodies, int island) {
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    if (island_of_[i] != island) continue;
+    bodies[i].awake = true;
+    bodies[i].sleep_time = 0;
+    island_of_[i] = -1;
+  }
+}
+
+bool Islands::wake_touched(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+                           const std::vector<std::pair<int, int>>& links) {
+  island_of_.resize(bodies.size(), -1);
+  bool woke = false;
+  auto consider = [&](int a, int b) {
+    const Body& ba = bodies[a];
+    const Body& bb = bodies[b];
+    if (!is_dynamic(ba) || !is_dynamic(bb) || ba.awake == bb.awake) return;
+    const int sleeper = ba.awake ? b : a;
+    if (island_of_[sleeper] >= 0) wake_island(bodies, island_of_[sleeper]);
+    bodies[sleeper].awake = true;  // also one put to sleep by hand, outside any island
+    bodies[sleeper].sleep_time = 0;
+    woke = true;
+  };
+  for (const Contact& c : contacts) consider(c.body_a, c.body_b);
+  for (const auto& [a, b] : links) consider(a, b);
+  return woke;
+}
+
+}  // namespace impulse::physics

@@ -1,0 +1,41 @@
+// Sleeping: bodies that have rested long enough, together with everything they touch (their
+// island), stop being simulated until an awake body reaches them.
+#pragma once
+#include "physics/body.h"
+#include "physics/contact.h"
+
+#include <utility>
+#include <vector>
+
+namespace impulse::physics {
+
+struct SleepSettings {
+  bool enabled = true;
+  Real velocity_tolerance = 0.05;  // m/s, for the fastest point of the body (Box2D's b2_linearSleepTolerance)
+  Real time_to_sleep = 0.5;        // s below the tolerance before an island sleeps
+};
+
+class Islands {
+ public:
+  // After a step: advances each body's sleep timer and puts to sleep every island (bodies joined
+  // by touching contacts or by `links`, e.g. joints) whose bodies have all rested for
+  // time_to_sleep. A sleeping body's velocities are zeroed.
+  void update(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+              const std::vector<std::pair<int, int>>& links, Real touching_distance, Real dt,
+              const SleepSettings& settings);
+
+  // Wakes the island of every sleeping body that one of `contacts` or `links` joins to an awake
+  // body. Returns whether any woke (their mutual contacts then need finding again).
+  bool wake_touched(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+                    const std::vector<std::pair<int, int>>& links);
+
+ private:
+  int find(int i);
+  void join(int a, int b);
+  void wake_island(std::vector<Body>& bodies, int island);
+
+  std::vector<int> parent_;      // union-find forest, rebuilt each update
+  std::vector<int> island_of_;   // the island a sleeping body fell asleep in, -1 when awake
+};
+
+}  // namespace impulse::physics

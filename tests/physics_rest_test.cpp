@@ -1,0 +1,85 @@
+// Exercise 4: do bodies come to a complete rest? Sleeping, waking, determinism.
+#include "tests/physics_test_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+namespace impulse::physics {
+namespace {
+
+using namespace test;
+
+TEST(Sleep, ABallThatStopsFallsAsleepAndWakesWhenHit) {
+  World world;
+  add_ground(world, 0.0, 0.6);
+  const int ball = add_sphere(world, Vec3(0, 1.5, 0), 0.5, 1.0, Vec3::Zero(), {0.3, 0.6});
+  int slept_at = -1;
+  for (int i = 0; i < 300 && slept_at < 0; ++i) {
+    world.step();
+    if (!world.bodies()[ball].awake) slept_at = i;
+  }
+  ASSERT_GE(slept_at, 0) << "never fell asleep";
+  EXPECT_NEAR(world.bodies()[ball].position.y(), 0.5, 0.01);
+
+  // Asleep, it is not simulated: it stays put.
+  const Vec3 resting = world.bodies()[ball].position;
+  for (int i = 0; i < 60; ++i) world.step();
+  EXPECT_EQ(world.bodies()[ball].position, resting);
+
+  // A second ball dropped on it wakes it.
+  const int hammer = add_sphere(world, Vec3(0.2, 2.5, 0), 0.3, 1.0);
+  bool woke = false;
+  for (int i = 0; i < 90 && !woke; ++i) {
+    world.step();
+    woke = world.bodies()[ball].awake;
+  }
+  EXPECT_TRUE(woke);
+  EXPECT_GT(world.bodies()[hammer].position.y(), 0.5) << "the hammer passed through";
+}
+
+TEST(Sleep, OffKeepsEverythingAwake) {
+  WorldSettings settings;
+  settings.sleep.enabled = false;
+  World world(settings);
+  add_ground(world);
+  const int ball = add_sphere(world, Vec3(0, 0.5, 0), 0.5, 1.0);
+  for (int i = 0; i < 180; ++i) world.step();
+  EXPECT_TRUE(world.bodies()[ball].awake);
+  EXPECT_LT(world.bodies()[ball].velocity.norm(), 1e-3);
+}
+
+uint64_t state_hash(const World& world) {
+  uint64_t hash = 1469598103934665603ull;  // FNV-1a over the bytes of every position and orientation
+  auto mix = [&](const void* data, size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+  };
+  for (const Body& b : world.bodies()) {
+    mix(b.position.data(), sizeof(Real) * 3);
+    mix(b.orientation.coeffs().data(), sizeof(Real) * 4);
+  }
+  return hash;
+}
+
+World sphere_heap() {
+  World world;
+  add_ground(world, 0.2, 0.5);
+  for (int i = 0; i < 60; ++i)
+    add_sphere(world, Vec3((i % 4) * 0.45 - 0.7 + 0.01 * (i % 3), 0.5 + 0.55 * (i / 4), (i % 5) * 0.02), 0.2, 1.0 + 0.1 * (i % 7),
+               Vec3(0.3 * ((i * 7) % 5 - 2), 0, 0.2 * ((i * 3) % 5 - 2)), {0.3, 0.5});
+  return world;
+}
+
+TEST(Determinism, SameSceneTwiceIsBitIdenticalAfter600Steps) {
+  World first = sphere_heap(), second = sphere_heap();
+  for (int i = 0; i < 600; ++i) {
+    first.step();
+    second.step();
+  }
+  EXPECT_EQ(state_hash(first), state_hash(second));
+  EXPECT_NE(state_hash(first), state_hash(sphere_heap())) << "nothing moved";
+}
+
+}  // namespace
+}  // namespace impulse::physics
