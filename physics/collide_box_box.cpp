@@ -17,8 +17,9 @@ constexpr Real kParallelSine = 1e-3;
 constexpr Real kRelativeTolerance = 0.05;
 constexpr Real kAbsoluteTolerance = 0.0005;  // m
 // Incident points this close outside a reference side plane are kept rather than clipped, so
-// that flush stacks keep their corner ids (m, capped at 1 % of the reference face).
-constexpr Real kClipTolerance = 0.001;
+// that flush stacks keep their corner ids (m, capped at 1 % of the reference face): a point
+// may lie this far beyond the reference face's rim.
+constexpr Real kClipTolerance = 0.0005;
 
 bool clearly_greater(Real candidate, Real current) {
   return candidate > current + kRelativeTolerance * std::abs(current) + kAbsoluteTolerance;
@@ -48,26 +49,29 @@ struct ClipVertex {
 };
 using Polygon = std::array<ClipVertex, 8>;  // a quad clipped by four planes has at most 8 sides
 
-// Sutherland-Hodgman: keeps the part of `in` where dot(m, p) <= offset.
-int clip(const Polygon& in, int count, const Vec3& m, Real offset, int side, Polygon& out) {
+// Sutherland-Hodgman: keeps the part of `in` where dot(m, p) <= offset. A vertex up to
+// `tolerance` outside stays as it is (no new points right next to it); cuts are exact.
+int clip(const Polygon& in, int count, const Vec3& m, Real offset, Real tolerance, int side, Polygon& out) {
   int n = 0;
   for (int i = 0; i < count; ++i) {
     const ClipVertex& cur = in[i];
     const ClipVertex& next = in[(i + 1) % count];
     const Real dc = m.dot(cur.p) - offset, dn = m.dot(next.p) - offset;
-    auto crossing = [&](int edge_after) {
+    auto cut = [&](int edge_after) {
       const Real t = dc / (dc - dn);
       return ClipVertex{cur.p + t * (next.p - cur.p), int(feature::clip_point(cur.edge, side)), edge_after};
     };
-    if (dc <= 0) {
-      if (dn > 0 && dc < 0) {
+    if (dc <= tolerance) {
+      if (dn <= tolerance) {
         out[n++] = cur;
-        out[n++] = crossing(12 + side);  // the polygon now runs along the side plane
+      } else if (dc < 0) {
+        out[n++] = cur;
+        out[n++] = cut(12 + side);  // leaving: the polygon now runs along the side plane
       } else {
-        out[n++] = {cur.p, cur.id, dn > 0 ? 12 + side : cur.edge};
+        out[n++] = {cur.p, cur.id, 12 + side};
       }
     } else if (dn < 0) {
-      out[n++] = crossing(cur.edge);
+      out[n++] = cut(cur.edge);  // entering
     }
   }
   return n;
@@ -103,7 +107,7 @@ int face_contact(const BoxFrame& ref, const BoxFrame& inc, int axis, Real sign, 
     const Real side_sign = side % 2 == 0 ? 1 : -1;
     const Vec3 m = side_sign * ref.axes.col(side_axis[side]);
     const Real half = ref.half[side_axis[side]];
-    count = clip(*polygon, count, m, m.dot(ref.centre) + half + std::min(kClipTolerance, half / 100), side, *scratch);
+    count = clip(*polygon, count, m, m.dot(ref.centre) + half, std::min(kClipTolerance, half / 100), side, *scratch);
     std::swap(polygon, scratch);
   }
 

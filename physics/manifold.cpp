@@ -67,8 +67,9 @@ int reduce_manifold(std::vector<Contact>& out, size_t first, const Vec3& normal)
     for (int i = 0; i < count; ++i) {
       if (taken(i)) continue;
       const Vec3& p = points[i].point;
-      const Real outside = sign * std::max({normal.dot((p - a).cross(b - a)), normal.dot((p - b).cross(c - b)),
-                                            normal.dot((p - c).cross(a - c))});
+      // Positive beyond an edge of the triangle, whichever way round it winds.
+      const Real outside = std::max({sign * normal.dot((p - a).cross(b - a)), sign * normal.dot((p - b).cross(c - b)),
+                                     sign * normal.dot((p - c).cross(a - c))});
       if (kBias * outside > best_score) best = i, best_score = outside;
     }
     if (best >= 0) keep[kept++] = best;

@@ -1,0 +1,345 @@
+// Narrow phase geometry: contact points, normals, depths and feature ids for every shape pair.
+#include "physics/collide.h"
+#include "physics/manifold.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace impulse::physics {
+namespace {
+
+constexpr Real kMargin = 0.02;
+constexpr Real kTol = 1e-9;
+
+Body make(const Shape& shape, const Vec3& position, const Quat& orientation = Quat::Identity(), bool is_static = false) {
+  BodyDef def;
+  def.shape = shape;
+  def.position = position;
+  def.orientation = orientation;
+  def.is_static = is_static;
+  return make_body(def);
+}
+
+Body unit_box(const Vec3& position, const Quat& orientation = Quat::Identity()) {
+  return make(Shape::box(Vec3(0.5, 0.5, 0.5)), position, orientation);
+}
+
+Quat about(const Vec3& axis, Real degrees) { return Quat(Eigen::AngleAxis<Real>(degrees * std::numbers::pi / 180, axis.normalized())); }
+
+std::vector<Contact> contacts(const Body& a, const Body& b, Real margin = kMargin) {
+  std::vector<Contact> out;
+  const int n = collide(a, 0, b, 1, margin, out);
+  EXPECT_EQ(n, int(out.size()));
+  return out;
+}
+
+std::vector<uint32_t> features(const std::vector<Contact>& cs) {
+  std::vector<uint32_t> f;
+  for (const Contact& c : cs) f.push_back(c.feature);
+  return f;
+}
+
+void expect_near(const Vec3& actual, const Vec3& expected, Real tol, const char* what) {
+  EXPECT_LT((actual - expected).norm(), tol) << what << ": got " << actual.transpose() << ", want " << expected.transpose();
+}
+
+// True when p (projected on the y = 0 plane) lies inside the box's footprint, grown by tol.
+bool in_footprint(const Body& box, const Vec3& p, Real tol) {
+  Vec3 local = box.orientation.conjugate() * (p - box.position);
+  return std::abs(local.x()) <= box.shape.half_extents.x() + tol && std::abs(local.z()) <= box.shape.half_extents.z() + tol;
+}
+
+// --- box against plane -------------------------------------------------------------------------
+
+TEST(BoxPlane, RestingUnitBoxTouchesAtItsFourBottomCorners) {
+  const Body box = unit_box(Vec3(1, 0.5, -2));
+  const Body ground = make(Shape::plane(Vec3::UnitY(), 0), Vec3::Zero());
+  const auto cs = contacts(ground, box);  // swapped: the box becomes A
+  ASSERT_EQ(cs.size(), 4u);
+  std::vector<Vec3> expected{{0.5, 0, -2.5}, {1.5, 0, -2.5}, {0.5, 0, -1.5}, {1.5, 0, -1.5}};
+  for (size_t k = 0; k < cs.size(); ++k) {
+    EXPECT_EQ(cs[k].body_a, 1);
+    EXPECT_EQ(cs[k].body_b, 0);
+    expect_near(cs[k].normal, Vec3::UnitY(), kTol, "normal");
+    EXPECT_NEAR(cs[k].separation, 0, kTol);
+    expect_near(cs[k].point, expected[k], kTol, "corner");
+  }
+  EXPECT_EQ(features(cs), (std::vector<uint32_t>{0, 1, 4, 5}));
+}
+
+TEST(BoxPlane, SpeculativeWithinMarginNothingBeyond) {
+  const Body ground = make(Shape::plane(Vec3::UnitY(), 0), Vec3::Zero());
+  const auto near = contacts(unit_box(Vec3(0, 0.51, 0)), ground);
+  ASSERT_EQ(near.size(), 4u);
+  for (const Contact& c : near) EXPECT_NEAR(c.separation, 0.01, kTol);
+  EXPECT_TRUE(contacts(unit_box(Vec3(0, 0.53, 0)), ground).empty());
+}
+
+TEST(BoxPlane, BoxTiltedAboutZTouchesAlongItsLowestEdge) {
+  const Real c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
+  const Real reach = 0.5 * (c + s);  // lowest corner below the centre
+  const Body box = unit_box(Vec3(0, reach - 0.01, 0), about(Vec3::UnitZ(), 30));
+  const Body ground = make(Shape::plane(Vec3::UnitY(), 0), Vec3::Zero());
+  const auto cs = contacts(box, ground);
+  ASSERT_EQ(cs.size(), 2u);
+  // The lowest corners are (-x, -y, +-z) turned 30 degrees about z: at x = 0.5 (s - c), 0.01 deep.
+  for (const Contact& contact : cs) {
+    EXPECT_NEAR(contact.separation, -0.01, kTol);
+    expect_near(contact.normal, Vec3::UnitY(), kTol, "normal");
+    EXPECT_NEAR(contact.point.x(), 0.5 * (s - c), kTol);
+    EXPECT_NEAR(contact.point.y(), -0.005, kTol);  // midway between corner and plane
+    EXPECT_NEAR(std::abs(contact.point.z()), 0.5, kTol);
+  }
+  EXPECT_NEAR(cs[0].point.z(), -cs[1].point.z(), kTol);
+}
+
+TEST(BoxPlane, BoxOnItsCornerTouchesWithThatCornerOnly) {
+  // Tilted so that corner 0 (-x, -y, -z) is the lowest, alone.
+  const Quat q = about(Vec3(1, 0, -1), 40);
+  Body box = unit_box(Vec3::Zero(), q);
+  Real lowest = INFINITY;
+  int lowest_corner = -1;
+  for (int i = 0; i < 8; ++i) {
+    const Real y = (q * box_corner(box.shape.half_extents, i)).y();
+    if (y < lowest) lowest = y, lowest_corner = i;
+  }
+  box.position = Vec3(0, -lowest - 0.003, 0);
+  const Body ground = make(Shape::plane(Vec3::UnitY(), 0), Vec3::Zero());
+  const auto cs = contacts(box, ground);
+  ASSERT_EQ(cs.size(), 1u);
+  EXPECT_EQ(cs[0].feature, feature::corner(lowest_corner));
+  EXPECT_NEAR(cs[0].separation, -0.003, kTol);
+  const Vec3 corner = box.position + q * box_corner(box.shape.half_extents, lowest_corner);
+  expect_near(cs[0].point, corner + Vec3(0, 0.0015, 0), kTol, "point");
+}
+
+// --- box against box ---------------------------------------------------------------------------
+
+TEST(BoxBox, Resting30DegreesTurnedOnALargerBoxGivesItsFourBottomCorners) {
+  const Body ground = make(Shape::box(Vec3(2, 0.5, 2)), Vec3::Zero(), Quat::Identity(), true);
+  const Quat q = about(Vec3::UnitY(), 30);
+  const Body top = unit_box(Vec3(0.3, 1 - 0.01, 0.2), q);
+  for (bool top_first : {true, false}) {
+    const auto cs = top_first ? contacts(top, ground) : contacts(ground, top);
+    ASSERT_EQ(cs.size(), 4u) << "top first " << top_first;
+    const Vec3 up = top_first ? Vec3::UnitY() : Vec3(-Vec3::UnitY());  // A is pushed away from B
+    std::vector<Vec3> corners;
+    for (int i : {0, 1, 4, 5}) corners.push_back(top.position + q * box_corner(top.shape.half_extents, i));
+    for (const Contact& c : cs) {
+      expect_near(c.normal, up, kTol, "normal");
+      EXPECT_NEAR(c.separation, -0.01, kTol);
+      EXPECT_NEAR(c.point.y(), 0.495, kTol);
+      // Each point sits on one of the top box's bottom corners.
+      const auto nearest = std::min_element(corners.begin(), corners.end(), [&](const Vec3& p, const Vec3& r) {
+        return (p - c.point).norm() < (r - c.point).norm();
+      });
+      EXPECT_LT((*nearest + Vec3(0, 0.005, 0) - c.point).norm(), 1e-9);
+    }
+  }
+}
+
+TEST(BoxBox, OffsetAndTurnedFaceContactStaysInsideTheOverlap) {
+  const Body lower = make(Shape::box(Vec3(0.5, 0.5, 0.5)), Vec3::Zero(), Quat::Identity(), true);
+  const Body upper = unit_box(Vec3(0.6, 1 - 0.01, 0.3), about(Vec3::UnitY(), 30));
+  const auto cs = contacts(upper, lower);
+  ASSERT_GE(cs.size(), 3u);
+  ASSERT_LE(cs.size(), 4u);
+  for (const Contact& c : cs) {
+    expect_near(c.normal, Vec3::UnitY(), kTol, "normal");
+    EXPECT_NEAR(c.separation, -0.01, kTol);
+    EXPECT_NEAR(c.point.y(), 0.495, kTol);
+    EXPECT_TRUE(in_footprint(lower, c.point, 1e-6)) << c.point.transpose();
+    EXPECT_TRUE(in_footprint(upper, c.point, 1e-6)) << c.point.transpose();
+  }
+  // The four kept points span most of the overlap polygon: at least 3/4 of its area.
+  // (Overlap computed by clipping a fine grid of samples.)
+  int inside = 0, samples = 0;
+  for (Real x = 0; x <= 0.5; x += 0.005)
+    for (Real z = -0.5; z <= 0.5; z += 0.005) {
+      ++samples;
+      if (in_footprint(upper, Vec3(x, 0, z), 0)) ++inside;
+    }
+  const Real overlap_area = 0.5 * 1.0 * inside / samples;
+  Real quad_area = 0;  // shoelace over the points in their (polygon) order
+  for (size_t k = 0; k < cs.size(); ++k) {
+    const Vec3& p = cs[k].point;
+    const Vec3& r = cs[(k + 1) % cs.size()].point;
+    quad_area += (p.z() * r.x() - p.x() * r.z()) / 2;
+  }
+  EXPECT_GT(std::abs(quad_area), 0.75 * overlap_area);
+}
+
+TEST(BoxBox, OctagonOverlapIsReducedToFourSpreadPoints) {
+  // Two unit boxes, one turned 45 degrees: the overlap is a regular octagon of 8 corners.
+  const Body lower = make(Shape::box(Vec3(0.5, 0.5, 0.5)), Vec3::Zero(), Quat::Identity(), true);
+  const Body upper = unit_box(Vec3(0, 1 - 0.01, 0), about(Vec3::UnitY(), 45));
+  const auto cs = contacts(upper, lower);
+  ASSERT_EQ(cs.size(), 4u);
+  Real area = 0;
+  for (size_t k = 0; k < cs.size(); ++k) {
+    EXPECT_NEAR(cs[k].separation, -0.01, kTol);
+    const Vec3& p = cs[k].point;
+    const Vec3& r = cs[(k + 1) % cs.size()].point;
+    area += (p.z() * r.x() - p.x() * r.z()) / 2;
+  }
+  const Real octagon = 2 * (std::sqrt(Real(2)) - 1);
+  EXPECT_GT(std::abs(area), 0.7 * octagon);  // the best four corners of an octagon hold 1/sqrt(2) of it
+}
+
+TEST(BoxBox, TiltedBoxRestsOnItsLowestEdge) {
+  const Body ground = make(Shape::box(Vec3(2, 0.5, 2)), Vec3::Zero(), Quat::Identity(), true);
+  const Real c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
+  const Body box = unit_box(Vec3(0, 0.5 + 0.5 * (c + s) - 0.01, 0), about(Vec3::UnitZ(), 30));
+  const auto cs = contacts(box, ground);
+  ASSERT_EQ(cs.size(), 2u);
+  for (const Contact& contact : cs) {
+    expect_near(contact.normal, Vec3::UnitY(), kTol, "normal");
+    EXPECT_NEAR(contact.separation, -0.01, kTol);
+    EXPECT_NEAR(contact.point.x(), 0.5 * (s - c), kTol);
+    EXPECT_NEAR(contact.point.y(), 0.495, kTol);
+    EXPECT_NEAR(std::abs(contact.point.z()), 0.5, kTol);
+    EXPECT_EQ(contact.feature >> 14, 1u);  // a face contact, not an edge pair
+  }
+}
+
+TEST(BoxBox, UnitBoxOnTheBenchmarkGroundBox) {
+  const Body ground = make(Shape::box(Vec3(100, 0.5, 100)), Vec3(0, -0.5, 0), Quat::Identity(), true);
+  const Body box = unit_box(Vec3(3.7, 0.5, -12.1));
+  const auto cs = contacts(ground, box);
+  ASSERT_EQ(cs.size(), 4u);
+  for (const Contact& c : cs) {
+    expect_near(c.normal, -Vec3::UnitY(), kTol, "normal");  // A (the ground) is pushed down
+    EXPECT_NEAR(c.separation, 0, 1e-12);
+    EXPECT_NEAR(std::abs(c.point.x() - 3.7), 0.5, 1e-12);
+    EXPECT_NEAR(std::abs(c.point.z() + 12.1), 0.5, 1e-12);
+  }
+}
+
+TEST(BoxBox, CrossingEdgesGiveOnePointBetweenTheirClosestPoints) {
+  // A turned 45 degrees about x: its lowest edge runs along x. B turned 45 degrees about z: its
+  // highest edge runs along z. They cross at right angles, overlapping by 0.02.
+  const Real r = std::sqrt(Real(0.5));  // half diagonal of a unit square
+  const Body b = make(Shape::box(Vec3(0.5, 0.5, 0.5)), Vec3::Zero(), about(Vec3::UnitZ(), 45), true);
+  const Body a = unit_box(Vec3(0.05, 2 * r - 0.02, -0.1), about(Vec3::UnitX(), 45));
+  const auto cs = contacts(a, b);
+  ASSERT_EQ(cs.size(), 1u);
+  const Contact& c = cs[0];
+  // Normal along x cross z (the edges' cross product), pointing the way A leaves B: up.
+  const Vec3 cross = Vec3::UnitX().cross(Vec3::UnitZ());
+  EXPECT_NEAR(std::abs(c.normal.dot(cross)), 1, kTol);
+  expect_near(c.normal, Vec3::UnitY(), kTol, "normal");
+  EXPECT_NEAR(c.separation, -0.02, kTol);
+  // Closest points: on B's edge (0, r, z) and A's edge (x, 2r - 0.02 - r, -0.1); crossing at x = 0, z = -0.1.
+  expect_near(c.point, Vec3(0, r - 0.01, -0.1), kTol, "point");
+  EXPECT_EQ(c.feature >> 14, 2u);
+}
+
+TEST(BoxBox, SeparatedBeyondTheMarginGiveNothing) {
+  const Body lower = unit_box(Vec3::Zero());
+  EXPECT_TRUE(contacts(unit_box(Vec3(0.2, 1.03, 0)), lower).empty());               // face axis
+  EXPECT_EQ(contacts(unit_box(Vec3(0.2, 1.01, 0)), lower).size(), 4u);               // speculative
+  const Real r = std::sqrt(Real(0.5));
+  const Body turned = make(Shape::box(Vec3(0.5, 0.5, 0.5)), Vec3::Zero(), about(Vec3::UnitZ(), 45));
+  EXPECT_TRUE(contacts(unit_box(Vec3(0, 2 * r + 0.03, 0), about(Vec3::UnitX(), 45)), turned).empty());  // edge axis
+  EXPECT_EQ(contacts(unit_box(Vec3(0, 2 * r + 0.01, 0), about(Vec3::UnitX(), 45)), turned).size(), 1u);
+  const Body ball = make(Shape::sphere(0.5), Vec3(0, 1.03, 0));
+  EXPECT_TRUE(contacts(ball, lower).empty());
+  EXPECT_TRUE(contacts(lower, make(Shape::plane(Vec3::UnitY(), -0.53), Vec3::Zero())).empty());
+}
+
+// --- sphere against box ------------------------------------------------------------------------
+
+class SphereBox : public ::testing::Test {
+ protected:
+  const Quat q = about(Vec3(0.2, 1, -0.3), 30);
+  const Body box = make(Shape::box(Vec3(0.5, 0.3, 0.4)), Vec3(1, 2, 3), q, true);
+  Vec3 world(const Vec3& local) const { return box.position + q * local; }
+  Body sphere(const Vec3& local_centre, Real radius = 0.25) const { return make(Shape::sphere(radius), world(local_centre)); }
+};
+
+TEST_F(SphereBox, AgainstAFace) {
+  const auto cs = contacts(sphere(Vec3(0.1, 0.3 + 0.24, -0.2)), box);
+  ASSERT_EQ(cs.size(), 1u);
+  expect_near(cs[0].normal, q * Vec3::UnitY(), kTol, "normal");
+  EXPECT_NEAR(cs[0].separation, -0.01, kTol);
+  expect_near(cs[0].point, world(Vec3(0.1, 0.3 - 0.005, -0.2)), kTol, "point");
+}
+
+TEST_F(SphereBox, AgainstAnEdge) {
+  const Vec3 out = Vec3(1, 1, 0).normalized();
+  const auto cs = contacts(sphere(Vec3(0.5, 0.3, 0.1) + out * 0.2), box);
+  ASSERT_EQ(cs.size(), 1u);
+  expect_near(cs[0].normal, q * out, kTol, "normal");
+  EXPECT_NEAR(cs[0].separation, -0.05, kTol);
+  expect_near(cs[0].point, world(Vec3(0.5, 0.3, 0.1) - out * 0.025), kTol, "point");
+}
+
+TEST_F(SphereBox, AgainstACorner) {
+  const Vec3 out = Vec3(-1, 1, 1).normalized();
+  const Vec3 corner(-0.5, 0.3, 0.4);
+  const auto cs = contacts(sphere(corner + out * 0.26), box);
+  ASSERT_EQ(cs.size(), 1u);
+  expect_near(cs[0].normal, q * out, kTol, "normal");
+  EXPECT_NEAR(cs[0].separation, 0.01, kTol);  // speculative
+  expect_near(cs[0].point, world(corner + out * 0.005), kTol, "point");
+  EXPECT_TRUE(contacts(sphere(corner + out * 0.28), box).empty());
+}
+
+TEST_F(SphereBox, CentreInsideLeavesThroughTheNearestFace) {
+  const auto cs = contacts(sphere(Vec3(0.1, -0.2, 0.05)), box);  // 0.1 from the -y face
+  ASSERT_EQ(cs.size(), 1u);
+  expect_near(cs[0].normal, q * -Vec3::UnitY(), kTol, "normal");
+  EXPECT_NEAR(cs[0].separation, -(0.1 + 0.25), kTol);
+  // Midway between the face point (y = -0.3) and the sphere's far side (y = -0.2 + 0.25).
+  expect_near(cs[0].point, world(Vec3(0.1, (-0.3 + 0.05) / 2, 0.05)), kTol, "point");
+}
+
+TEST_F(SphereBox, OrderDoesNotMatter) {
+  std::vector<Contact> out;
+  collide(box, 7, sphere(Vec3(0.1, 0.5, 0)), 3, kMargin, out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].body_a, 3);  // the sphere is A
+  EXPECT_EQ(out[0].body_b, 7);
+}
+
+// --- feature ids -------------------------------------------------------------------------------
+
+TEST(Features, UnchangedAfterATinyMotion) {
+  const Body ground = make(Shape::box(Vec3(3, 0.5, 3)), Vec3::Zero(), Quat::Identity(), true);
+  const Body plane = make(Shape::plane(Vec3::UnitY(), 0.5), Vec3::Zero());
+  const Body same_size = make(Shape::box(Vec3(0.5, 0.5, 0.5)), Vec3(0, 0, 0), Quat::Identity(), true);
+  const Quat q = about(Vec3::UnitY(), 20);
+  const Body before = unit_box(Vec3(0.2, 1 - 0.001, 0.1), q);
+  Body after = before;
+  after.position += Vec3(1e-4, -2e-4, 3e-5);
+  after.orientation = (about(Vec3(1, 0.3, 0.5), 0.01) * before.orientation).normalized();
+
+  const Body flush = unit_box(Vec3(0, 1 - 0.001, 0));  // flush edges with `same_size`
+  Body flush_after = flush;
+  flush_after.position += Vec3(2e-4, 1e-4, -3e-4);
+  flush_after.orientation = about(Vec3(0.3, 1, 0.2), 0.01);
+
+  struct Case { const char* name; const Body &a, &b, &a2, &b2; size_t count; };
+  const Case cases[] = {
+      {"box on ground box", before, ground, after, ground, 4},
+      {"ground box under box", ground, before, ground, after, 4},
+      {"box on plane", before, plane, after, plane, 4},
+      {"flush stack", flush, same_size, flush_after, same_size, 4},
+      {"flush stack, lower first", same_size, flush, same_size, flush_after, 4},
+  };
+  for (const Case& c : cases) {
+    const auto first = contacts(c.a, c.b), second = contacts(c.a2, c.b2);
+    EXPECT_EQ(first.size(), c.count) << c.name;
+    EXPECT_EQ(features(first), features(second)) << c.name;
+    auto f = features(first);
+    std::sort(f.begin(), f.end());
+    EXPECT_EQ(std::unique(f.begin(), f.end()), f.end()) << c.name << ": ids repeat";
+  }
+}
+
+}  // namespace
+}  // namespace impulse::physics
