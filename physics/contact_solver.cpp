@@ -38,7 +38,6 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
                             const std::vector<BodyState>& states, const ContactSolverSettings& settings,
                             const Vec3& gravity, Real h) {
   settings_ = settings;
-  h_ = h;
   const Softness contact_soft = make_softness(settings.contact_hertz, settings.contact_damping_ratio, h);
   // Contacts against static bodies can be stiffer: only one body moves (Box2D's staticSoftness).
   const Softness static_soft = make_softness(2 * settings.contact_hertz, settings.contact_damping_ratio, h);
@@ -100,7 +99,7 @@ void ContactSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_b
     // "stop approaching"), accumulated and clamped to push only.
     const Vec3 dv = relative_velocity(sa, sb, c.anchor_a, c.anchor_b);
     const Real vn = dv.dot(c.normal);
-    if (use_bias) c.approach_velocity = std::min(c.approach_velocity, touch_velocity(vn, separation, c.normal_acceleration, 1 / inv_h));
+    if (use_bias && bounce(c, sa, sb, vn, separation, 1 / inv_h)) continue;
     Real impulse = -c.normal_mass * mass_scale * (vn + bias) - impulse_scale * c.normal_impulse;
     const Real new_impulse = std::max(c.normal_impulse + impulse, Real(0));
     impulse = new_impulse - c.normal_impulse;
@@ -128,21 +127,62 @@ void ContactSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_b
   }
 }
 
-void ContactSolver::apply_restitution(std::vector<BodyState>& states) {
+// A collision (restitution) is answered in the sub-step in which the surfaces meet, one contact at
+// a time: so a hit passes along a row of touching bodies as in Newton's cradle, instead of being
+// shared out inelastically first. Slower hits (resting contact) are left to the solver.
+bool ContactSolver::bounce(ContactConstraint& c, BodyState& sa, BodyState& sb, Real vn, Real separation, Real h) {
+  if (c.bounced || c.restitution == 0 || vn > -settings_.restitution_threshold) return false;
+  if (separation + vn * h > 0) return false;  // will not meet within this sub-step
+
+  // Exactly, under the constant relative acceleration a: the surfaces, `gap` apart at the start
+  // of the sub-step, meet after tau at v_touch and part at u = -e v_touch (eq. 5). Semi-implicit
+  // Euler's velocity lags its position by half a sub-step (its state (x, v) is the exact state
+  // (x, v + a h/2)), so the velocity to store for the end of the sub-step is u + a (h/2 - tau).
+  const Real a = c.normal_acceleration;
+  const Real gap = std::max(separation, Real(0));
+  const Real v_touch = touch_velocity(vn, gap, a, h);
+  const Real v_start = vn - a * h / 2;
+  const Real tau = gap > 0 ? 2 * gap / -(v_start + v_touch) : 0;
+  const Real u = -c.restitution * v_touch;
+  const Real target = u + a * (h / 2 - tau);
+  const Real impulse = std::max(c.normal_mass * (target - vn), Real(0));  // eq. 13 with (1 + e)
+  apply_impulse(sa, sb, c.anchor_a, c.anchor_b, impulse * c.normal);
+  c.total_normal_impulse += impulse;
+  c.max_normal_impulse = std::max(c.max_normal_impulse, impulse);
+  c.bounced = true;
+
+  // Friction during the hit, within the Coulomb disc of this impulse.
+  if (c.friction > 0) {
+    const Vec3 dvt = relative_velocity(sa, sb, c.anchor_a, c.anchor_b);
+    Real j1 = -c.tangent_mass1 * dvt.dot(c.tangent1), j2 = -c.tangent_mass2 * dvt.dot(c.tangent2);
+    const Real length = std::hypot(j1, j2), limit = c.friction * impulse;
+    if (length > limit) {
+      j1 *= limit / length;
+      j2 *= limit / length;
+    }
+    apply_impulse(sa, sb, c.anchor_a, c.anchor_b, j1 * c.tangent1 + j2 * c.tangent2);
+    c.total_tangent_impulse1 += j1;
+    c.total_tangent_impulse2 += j2;
+  }
+
+  // Integrating the whole sub-step at `target` from `gap` would not leave the surfaces where the
+  // exact motion does, u (h - tau) + a (h - tau)^2 / 2 apart: take the difference back afterwards.
+  const Real after = h - tau;
+  c.bounce_shift = (u * after + a * after * after / 2) - (gap + target * h);
+  return true;
+}
+
+void ContactSolver::apply_bounce_shifts(std::vector<BodyState>& states) {
   for (ContactConstraint& c : constraints_) {
-    if (c.restitution == 0 || c.approach_velocity > -settings_.restitution_threshold || c.max_normal_impulse == 0) continue;
+    if (c.bounce_shift == 0) continue;
     BodyState& sa = states[c.a];
     BodyState& sb = states[c.b];
-    // eq. 5 and 13 with (1 + e): leave with e times the speed at which the bodies met.
-    const Real vn = relative_velocity(sa, sb, c.anchor_a, c.anchor_b).dot(c.normal);
-    // Clamped so that the step's impulse still only pushes; kept out of the warm-start value.
-    // Leave at e times the touch speed (eq. 5), stored half a sub-step early as semi-implicit
-    // Euler wants it, so that a ball dropped from H rises to e^2 H.
-    const Real target = -c.restitution * c.approach_velocity - c.normal_acceleration * h_ / 2;
-    const Real impulse = c.normal_mass * (target - vn);
-    const Real applied = std::max(impulse, -c.normal_impulse);
-    c.total_normal_impulse += applied;
-    apply_impulse(sa, sb, c.anchor_a, c.anchor_b, applied * c.normal);
+    const Real total = sa.inv_mass + sb.inv_mass;
+    if (total > 0) {
+      sa.dp += c.normal * (c.bounce_shift * sa.inv_mass / total);
+      sb.dp -= c.normal * (c.bounce_shift * sb.inv_mass / total);
+    }
+    c.bounce_shift = 0;
   }
 }
 

@@ -1,5 +1,5 @@
 // Sequential impulses on contacts: accumulated, clamped normal impulses (eq. 13 as corrected),
-// Coulomb friction on two tangents, soft position correction, restitution applied last.
+// Coulomb friction on two tangents, soft position correction, and restitution as each contact is met.
 #pragma once
 #include "physics/body.h"
 #include "physics/contact.h"
@@ -35,8 +35,9 @@ struct ContactConstraint {
   // Sums over the whole step, for the records.
   Real total_normal_impulse = 0, total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
   Real max_normal_impulse = 0;
-  Real approach_velocity = 0;          // speed at which the surfaces met (< 0), for restitution
   Real normal_acceleration = 0;        // of A relative to B along the normal, from gravity
+  bool bounced = false;                // restitution applied this step
+  Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
 };
 
 // Separation now, from how far each body has moved and turned since the step began.
@@ -54,7 +55,7 @@ class ContactSolver {
                const Vec3& gravity, Real h);
   void warm_start(std::vector<BodyState>& states) const;
   void solve(std::vector<BodyState>& states, Real inv_h, bool use_bias);
-  void apply_restitution(std::vector<BodyState>& states);
+  void apply_bounce_shifts(std::vector<BodyState>& states);  // after integrating positions
   void end_substep();  // adds this sub-step's impulses to the step totals
 
   std::vector<ContactConstraint>& constraints() { return constraints_; }
@@ -62,8 +63,9 @@ class ContactSolver {
 
  private:
   std::vector<ContactConstraint> constraints_;
+  bool bounce(ContactConstraint& c, BodyState& sa, BodyState& sb, Real vn, Real separation, Real h);
+
   ContactSolverSettings settings_;
-  Real h_ = 0;  // sub-step, s
 };
 
 }  // namespace impulse::physics

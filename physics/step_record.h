@@ -1,5 +1,6 @@
 // What one step did, as plain data for the renderer and for plots.
 #pragma once
+#include "physics/joint.h"
 #include "physics/math.h"
 
 #include <cstdint>
@@ -16,10 +17,17 @@ struct ContactRecord {
   Vec3 tangent_impulse = Vec3::Zero();  // N s over the step, friction on A
 };
 
+struct JointRecord {
+  JointType type = JointType::ball;
+  int body_a = kWorld, body_b = kWorld;
+  Vec3 anchor_a = Vec3::Zero(), anchor_b = Vec3::Zero();  // world points on A and on B
+};
+
 struct StepRecord {
   int64_t step = 0;
   Real time = 0;                        // s, at the end of the step
   std::vector<ContactRecord> contacts;  // touching, or pushed this step
+  std::vector<JointRecord> joints;
   Real kinetic_energy = 0;              // J, linear and rotational
   Real potential_energy = 0;            // J, gravity, zero at the origin
   Vec3 linear_momentum = Vec3::Zero();  // kg m/s

@@ -26,6 +26,12 @@ int World::add_body(const BodyDef& def) {
   return int(bodies_.size()) - 1;
 }
 
+int World::add_joint(const JointDef& def) {
+  joints_.push_back(make_joint(def, bodies_));
+  if (def.body_a != kWorld && def.body_b != kWorld) links_.emplace_back(def.body_a, def.body_b);
+  return int(joints_.size()) - 1;
+}
+
 const StepRecord& World::step() {
   const Real dt = settings_.time_step;
   const Real h = dt / settings_.substeps;
@@ -34,6 +40,8 @@ const StepRecord& World::step() {
   find_contacts();
   load_states();
   contact_solver_.prepare(contacts_, bodies_, states_, settings_.contact, settings_.gravity, h);
+  const Real joint_step = settings_.method == ResponseMethod::workshop || settings_.method == ResponseMethod::projection ? dt : h;
+  joint_solver_.prepare(joints_, bodies_, settings_.joint_hertz, settings_.joint_damping_ratio, joint_step);
   switch (settings_.method) {
     case ResponseMethod::impulse: solve_impulse(h); break;
     case ResponseMethod::workshop: solve_workshop(dt); break;
@@ -51,7 +59,7 @@ const StepRecord& World::step() {
 }
 
 // Box2D v3's soft step: per sub-step, integrate velocities, warm start, solve with the soft
-// position bias, integrate positions, then relax without bias. Restitution comes last.
+// position bias (bouncing the contacts that meet), integrate positions, then relax without bias.
 void World::solve_impulse(Real h) {
   auto& constraints = contact_solver_.constraints();
   for (size_t i = 0; i < contacts_.size(); ++i) {
@@ -63,13 +71,16 @@ void World::solve_impulse(Real h) {
   }
   for (int i = 0; i < settings_.substeps; ++i) {
     integrate_velocities(h);
+    joint_solver_.warm_start(states_);
     contact_solver_.warm_start(states_);
+    joint_solver_.solve(states_, 1 / h, true);
     contact_solver_.solve(states_, 1 / h, true);
     integrate_positions(h);
+    contact_solver_.apply_bounce_shifts(states_);
+    joint_solver_.solve(states_, 1 / h, false);
     contact_solver_.solve(states_, 1 / h, false);
     contact_solver_.end_substep();
   }
-  contact_solver_.apply_restitution(states_);
   remember_impulses();
 }
 
@@ -77,13 +88,17 @@ void World::solve_impulse(Real h) {
 void World::solve_workshop(Real dt) {
   apply_workshop_impulses(contact_solver_.constraints(), states_, settings_.contact.friction);
   integrate_velocities(dt);
+  solve_joints(dt, true);
   integrate_positions(dt);
+  solve_joints(dt, false);
 }
 
 // Move, then push overlapping bodies apart. Velocities keep what gravity gave them.
 void World::solve_projection(Real dt) {
   integrate_velocities(dt);
+  solve_joints(dt, true);
   integrate_positions(dt);
+  solve_joints(dt, false);
   project_apart(contact_solver_.constraints(), states_);
 }
 
@@ -93,8 +108,17 @@ void World::solve_penalty(Real h) {
   for (int i = 0; i < settings_.substeps; ++i) {
     apply_penalty_forces(contact_solver_.constraints(), states_, settings_.penalty, h);
     integrate_velocities(h);
+    solve_joints(h, true);
     integrate_positions(h);
+    solve_joints(h, false);
   }
+}
+
+// The teaching methods answer contacts their own way; joints are solved as in the default method.
+void World::solve_joints(Real h, bool use_bias) {
+  if (joints_.empty()) return;
+  if (use_bias) joint_solver_.warm_start(states_);
+  joint_solver_.solve(states_, 1 / h, use_bias);
 }
 
 void World::find_contacts() {
@@ -107,7 +131,8 @@ void World::find_contacts() {
 }
 
 void World::load_states() {
-  states_.resize(bodies_.size());
+  states_.resize(bodies_.size() + 1);
+  states_.back() = BodyState{};  // the world, for joints fixed in it: static
   for (size_t i = 0; i < bodies_.size(); ++i) {
     const Body& body = bodies_[i];
     BodyState& s = states_[i];
@@ -180,6 +205,13 @@ void World::fill_record() {
     record_.contacts.push_back({contact.body_a, contact.body_b, contact.point, contact.normal, contact.penetration(),
                                 c.total_normal_impulse,
                                 c.total_tangent_impulse1 * c.tangent1 + c.total_tangent_impulse2 * c.tangent2});
+  }
+  record_.joints.clear();
+  for (const Joint& j : joints_) {
+    auto world_point = [&](int body, const Vec3& local) {
+      return body == kWorld ? local : Vec3(bodies_[body].position + bodies_[body].orientation * local);
+    };
+    record_.joints.push_back({j.type, j.body_a, j.body_b, world_point(j.body_a, j.local_anchor_a), world_point(j.body_b, j.local_anchor_b)});
   }
   record_.kinetic_energy = 0;
   record_.potential_energy = 0;

@@ -4,6 +4,7 @@
 #include "physics/contact.h"
 #include "physics/contact_finder.h"
 #include "physics/island.h"
+#include "physics/joint_solver.h"
 #include "physics/contact_solver.h"
 #include "physics/response_method.h"
 #include "physics/step_record.h"
@@ -23,6 +24,8 @@ struct WorldSettings {
   ContactSolverSettings contact;
   PenaltySettings penalty;
   SleepSettings sleep;
+  Real joint_hertz = 60;           // stiffness of the joints' position correction
+  Real joint_damping_ratio = 2;
 };
 
 class World {
@@ -37,6 +40,11 @@ class World {
   // is no longer finite (NaN or infinity never reaches the caller's renderer).
   const StepRecord& step();
 
+  // Joins two bodies (or a body and the world, kWorld) at their current poses; returns its index.
+  // Throws std::invalid_argument for an impossible joint.
+  int add_joint(const JointDef& def);
+  const std::vector<Joint>& joints() const { return joints_; }
+
   const std::vector<Body>& bodies() const { return bodies_; }
   Body& body(int index) { return bodies_.at(index); }
   const WorldSettings& settings() const { return settings_; }
@@ -50,6 +58,7 @@ class World {
   void solve_workshop(Real dt);
   void solve_projection(Real dt);
   void solve_penalty(Real h);
+  void solve_joints(Real h, bool use_bias);
   void load_states();
   void integrate_velocities(Real h);
   void integrate_positions(Real h);
@@ -65,7 +74,9 @@ class World {
   std::vector<uint8_t> awake_;
   ContactFinder contact_finder_;
   Islands islands_;
-  std::vector<std::pair<int, int>> links_;  // body pairs joined by joints
+  std::vector<Joint> joints_;
+  JointSolver joint_solver_;
+  std::vector<std::pair<int, int>> links_;  // body pairs joined by joints, for the islands
   ContactSolver contact_solver_;
   struct WarmImpulse { Real normal, tangent1, tangent2; };
   std::unordered_map<uint64_t, WarmImpulse> warm_impulses_;  // last step's, by pair and feature

@@ -25,7 +25,7 @@ TEST_P(EveryImpulseMethod, ObliqueHitConservesLinearMomentum) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, EveryImpulseMethod,
                          ::testing::Values(ResponseMethod::impulse, ResponseMethod::workshop, ResponseMethod::penalty),
-                         [](const auto& info) { return std::string(method_name(info.param)); });
+                         [](const ::testing::TestParamInfo<ResponseMethod>& param) { return std::string(method_name(param.param)); });
 
 // The default method: equal masses head on with e = 1 exchange their velocities.
 TEST(ImpulseMethod, EqualMassesExchangeVelocities) {

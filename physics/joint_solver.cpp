@@ -1,0 +1,181 @@
+#include "physics/joint_solver.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace impulse::physics {
+
+namespace {
+
+Mat3 skew(const Vec3& r) {
+  Mat3 m;
+  m << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
+  return m;
+}
+
+// How far each body has moved since the step began, applied to its anchor.
+Vec3 anchor_now(const BodyState& s, const Vec3& anchor) { return s.dp + s.dq * anchor; }
+
+// Velocity of B's point at rb relative to A's point at ra (the opposite of relative_velocity).
+Vec3 velocity_b_minus_a(const BodyState& sa, const BodyState& sb, const Vec3& ra, const Vec3& rb) {
+  return -relative_velocity(sa, sb, ra, rb);
+}
+
+}  // namespace
+
+Joint make_joint(const JointDef& def, const std::vector<Body>& bodies) {
+  const int n = int(bodies.size());
+  auto check_body = [&](int index, const char* which) {
+    if (index != kWorld && (index < 0 || index >= n))
+      throw std::invalid_argument(std::string("joint body ") + which + " does not exist");
+  };
+  check_body(def.body_a, "A");
+  check_body(def.body_b, "B");
+  if (def.body_a == def.body_b) throw std::invalid_argument("a joint needs two different bodies");
+  auto to_local = [&](int index, const Vec3& world_point) -> Vec3 {
+    if (index == kWorld) return world_point;
+    const Body& body = bodies[index];
+    return body.orientation.conjugate() * (world_point - body.position);
+  };
+  auto axis_local = [&](int index, const Vec3& world_axis) -> Vec3 {
+    return index == kWorld ? world_axis : Vec3(bodies[index].orientation.conjugate() * world_axis);
+  };
+
+  Joint joint;
+  joint.name = def.name;
+  joint.type = def.type;
+  joint.body_a = def.body_a;
+  joint.body_b = def.body_b;
+  if (def.type == JointType::distance) {
+    joint.local_anchor_a = to_local(def.body_a, def.anchor_a);
+    joint.local_anchor_b = to_local(def.body_b, def.anchor_b);
+    joint.length = def.length > 0 ? def.length : (def.anchor_b - def.anchor_a).norm();
+    joint.rope = def.rope;
+    if (!(joint.length > 1e-6)) throw std::invalid_argument("a distance joint needs a length > 0");
+  } else {
+    joint.local_anchor_a = to_local(def.body_a, def.anchor);
+    joint.local_anchor_b = to_local(def.body_b, def.anchor);
+    if (def.type == JointType::hinge) {
+      if (def.axis.norm() < 1e-9) throw std::invalid_argument("a hinge needs a non-zero axis");
+      joint.local_axis_a = axis_local(def.body_a, def.axis.normalized());
+      joint.local_axis_b = axis_local(def.body_b, def.axis.normalized());
+    }
+  }
+  return joint;
+}
+
+void JointSolver::prepare(std::vector<Joint>& joints, const std::vector<Body>& bodies, Real hertz,
+                          Real damping_ratio, Real h) {
+  softness_ = make_softness(hertz, damping_ratio, h);
+  const int world = int(bodies.size());
+  prepared_.clear();
+  for (Joint& joint : joints) {
+    Prepared p;
+    p.joint = &joint;
+    p.a = joint.body_a == kWorld ? world : joint.body_a;
+    p.b = joint.body_b == kWorld ? world : joint.body_b;
+    const Quat qa = joint.body_a == kWorld ? Quat::Identity() : bodies[joint.body_a].orientation;
+    const Quat qb = joint.body_b == kWorld ? Quat::Identity() : bodies[joint.body_b].orientation;
+    const Vec3 ca = joint.body_a == kWorld ? Vec3::Zero() : bodies[joint.body_a].position;
+    const Vec3 cb = joint.body_b == kWorld ? Vec3::Zero() : bodies[joint.body_b].position;
+    p.anchor_a = qa * joint.local_anchor_a;
+    p.anchor_b = qb * joint.local_anchor_b;
+    p.delta_centre = cb - ca;
+    p.axis_a = qa * joint.local_axis_a;
+    p.axis_b = qb * joint.local_axis_b;
+    p.length = joint.length;
+    prepared_.push_back(p);
+  }
+}
+
+void JointSolver::warm_start(std::vector<BodyState>& states) const {
+  for (const Prepared& p : prepared_) {
+    BodyState& sa = states[p.a];
+    BodyState& sb = states[p.b];
+    const Joint& j = *p.joint;
+    const Vec3 ra = sa.dq * p.anchor_a, rb = sb.dq * p.anchor_b;
+    Vec3 linear = j.linear_impulse;
+    Vec3 angular = Vec3::Zero();
+    if (j.type == JointType::distance) {
+      const Vec3 d = p.delta_centre + anchor_now(sb, p.anchor_b) - anchor_now(sa, p.anchor_a);
+      linear = j.axial_impulse * d.normalized();
+    }
+    if (j.type == JointType::hinge) {
+      Vec3 t1, t2;
+      tangent_basis(sa.dq * p.axis_a, t1, t2);
+      angular = j.angular_impulse[0] * t1 + j.angular_impulse[1] * t2;
+    }
+    apply_impulse(sa, sb, ra, rb, -linear);  // +linear on B, -linear on A
+    sa.w -= sa.inv_inertia * angular;
+    sb.w += sb.inv_inertia * angular;
+  }
+}
+
+void JointSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_bias) {
+  for (Prepared& p : prepared_) {
+    BodyState& sa = states[p.a];
+    BodyState& sb = states[p.b];
+    Joint& j = *p.joint;
+    const Vec3 ra = sa.dq * p.anchor_a, rb = sb.dq * p.anchor_b;
+    const Real bias_rate = use_bias ? softness_.bias_rate : 0;
+    const Real mass_scale = use_bias ? softness_.mass_scale : 1;
+    const Real impulse_scale = use_bias ? softness_.impulse_scale : 0;
+    // Where B's anchor is relative to A's (zero when the joint holds).
+    const Vec3 separation = p.delta_centre + anchor_now(sb, p.anchor_b) - anchor_now(sa, p.anchor_a);
+
+    if (j.type == JointType::hinge) {
+      // Two angular rows: no relative spin across the hinge axis.
+      const Vec3 axis_a = sa.dq * p.axis_a, axis_b = sb.dq * p.axis_b;
+      Vec3 t[2];
+      tangent_basis(axis_a, t[0], t[1]);
+      const Vec3 misalignment = axis_a.cross(axis_b);
+      const Mat3 inv_i = sa.inv_inertia + sb.inv_inertia;
+      Eigen::Matrix<Real, 2, 2> k;
+      for (int r = 0; r < 2; ++r)
+        for (int c = 0; c < 2; ++c) k(r, c) = t[r].dot(inv_i * t[c]);
+      if (k.determinant() > 1e-12) {
+        const Vec3 dw = sb.w - sa.w;
+        const Eigen::Matrix<Real, 2, 1> cdot(dw.dot(t[0]), dw.dot(t[1]));
+        const Eigen::Matrix<Real, 2, 1> c(misalignment.dot(t[0]), misalignment.dot(t[1]));
+        const Eigen::Matrix<Real, 2, 1> old(j.angular_impulse[0], j.angular_impulse[1]);
+        const Eigen::Matrix<Real, 2, 1> impulse = -mass_scale * k.inverse() * (cdot + bias_rate * c) - impulse_scale * old;
+        j.angular_impulse[0] += impulse[0];
+        j.angular_impulse[1] += impulse[1];
+        const Vec3 angular = impulse[0] * t[0] + impulse[1] * t[1];
+        sa.w -= sa.inv_inertia * angular;
+        sb.w += sb.inv_inertia * angular;
+      }
+    }
+
+    if (j.type == JointType::ball || j.type == JointType::hinge) {
+      // Three linear rows: the anchors stay together.
+      const Mat3 k = (sa.inv_mass + sb.inv_mass) * Mat3::Identity() + skew(ra) * sa.inv_inertia * skew(ra).transpose() +
+                     skew(rb) * sb.inv_inertia * skew(rb).transpose();
+      const Vec3 cdot = velocity_b_minus_a(sa, sb, ra, rb);
+      const Vec3 impulse = -mass_scale * k.ldlt().solve(cdot + bias_rate * separation) - impulse_scale * j.linear_impulse;
+      j.linear_impulse += impulse;
+      apply_impulse(sa, sb, ra, rb, -impulse);
+      continue;
+    }
+
+    // Distance: one row along A->B.
+    const Real length = separation.norm();
+    if (length < 1e-9) continue;
+    const Vec3 u = separation / length;
+    const Real c = length - p.length;
+    const Real k = sa.inv_mass + sb.inv_mass + ra.cross(u).dot(sa.inv_inertia * ra.cross(u)) + rb.cross(u).dot(sb.inv_inertia * rb.cross(u));
+    if (k <= 0) continue;
+    const Real cdot = u.dot(velocity_b_minus_a(sa, sb, ra, rb));
+    Real impulse;
+    if (j.rope && c < 0) {
+      impulse = -(cdot + c * inv_h) / k;  // slack: may tighten up to the length this sub-step
+    } else {
+      impulse = -mass_scale * (cdot + bias_rate * c) / k - impulse_scale * j.axial_impulse;
+    }
+    const Real old = j.axial_impulse;
+    j.axial_impulse = j.rope ? std::min(old + impulse, Real(0)) : old + impulse;  // a rope only pulls
+    apply_impulse(sa, sb, ra, rb, -(j.axial_impulse - old) * u);
+  }
+}
+
+}  // namespace impulse::physics

@@ -1,0 +1,35 @@
+// Solves joints by sequential impulses inside the soft step, like contacts (Box2D v3 joint.c):
+// each joint's velocity error is removed, and its position error by a soft spring.
+#pragma once
+#include "physics/body.h"
+#include "physics/joint.h"
+#include "physics/solver_state.h"
+
+#include <vector>
+
+namespace impulse::physics {
+
+// A joint made from its definition at the bodies' current poses. Throws std::invalid_argument.
+Joint make_joint(const JointDef& def, const std::vector<Body>& bodies);
+
+class JointSolver {
+ public:
+  // `states` has one entry per body and, last, a static entry standing for the world.
+  void prepare(std::vector<Joint>& joints, const std::vector<Body>& bodies, Real hertz, Real damping_ratio, Real h);
+  void warm_start(std::vector<BodyState>& states) const;
+  void solve(std::vector<BodyState>& states, Real inv_h, bool use_bias);  // accumulates into the joints
+
+ private:
+  struct Prepared {
+    Joint* joint;
+    int a, b;                  // indices into states (the world is the last)
+    Vec3 anchor_a, anchor_b;   // world offsets from each centre, at step start
+    Vec3 delta_centre;         // centre B - centre A, at step start
+    Vec3 axis_a, axis_b;       // hinge axes in world space, at step start
+    Real length = 0;
+  };
+  std::vector<Prepared> prepared_;
+  Softness softness_;
+};
+
+}  // namespace impulse::physics
