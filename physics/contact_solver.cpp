@@ -134,6 +134,15 @@ bool ContactSolver::bounce(ContactConstraint& c, BodyState& sa, BodyState& sb, R
   if (c.bounced || c.restitution == 0 || vn > -settings_.restitution_threshold) return false;
   if (separation + vn * h > 0) return false;  // will not meet within this sub-step
 
+  // The hit acts at one world point for both bodies, midway between where their anchors are now,
+  // so that it conserves angular momentum exactly; its effective mass follows.
+  // (Offsets from the step-start contact point; r_a - r_b = x_b - x_a, and r = anchor at rest.)
+  const Vec3 mean_motion = ((sa.dp + sa.dq * c.anchor_a) + (sb.dp + sb.dq * c.anchor_b)) / 2;
+  const Vec3 half_span = (c.anchor_a - c.anchor_b) / 2;
+  const Vec3 ra = mean_motion - sa.dp + half_span, rb = mean_motion - sb.dp - half_span;
+  const Real normal_mass = safe_inverse(inverse_effective_mass(sa, sb, ra, rb, c.normal));
+  vn = relative_velocity(sa, sb, ra, rb).dot(c.normal);
+
   // Exactly, under the constant relative acceleration a: the surfaces, `gap` apart at the start
   // of the sub-step, meet after tau at v_touch and part at u = -e v_touch (eq. 5). Semi-implicit
   // Euler's velocity lags its position by half a sub-step (its state (x, v) is the exact state
@@ -145,22 +154,22 @@ bool ContactSolver::bounce(ContactConstraint& c, BodyState& sa, BodyState& sb, R
   const Real tau = gap > 0 ? 2 * gap / -(v_start + v_touch) : 0;
   const Real u = -c.restitution * v_touch;
   const Real target = u + a * (h / 2 - tau);
-  const Real impulse = std::max(c.normal_mass * (target - vn), Real(0));  // eq. 13 with (1 + e)
-  apply_impulse(sa, sb, c.anchor_a, c.anchor_b, impulse * c.normal);
+  const Real impulse = std::max(normal_mass * (target - vn), Real(0));  // eq. 13 with (1 + e)
+  apply_impulse(sa, sb, ra, rb, impulse * c.normal);
   c.total_normal_impulse += impulse;
   c.max_normal_impulse = std::max(c.max_normal_impulse, impulse);
   c.bounced = true;
 
   // Friction during the hit, within the Coulomb disc of this impulse.
   if (c.friction > 0) {
-    const Vec3 dvt = relative_velocity(sa, sb, c.anchor_a, c.anchor_b);
+    const Vec3 dvt = relative_velocity(sa, sb, ra, rb);
     Real j1 = -c.tangent_mass1 * dvt.dot(c.tangent1), j2 = -c.tangent_mass2 * dvt.dot(c.tangent2);
     const Real length = std::hypot(j1, j2), limit = c.friction * impulse;
     if (length > limit) {
       j1 *= limit / length;
       j2 *= limit / length;
     }
-    apply_impulse(sa, sb, c.anchor_a, c.anchor_b, j1 * c.tangent1 + j2 * c.tangent2);
+    apply_impulse(sa, sb, ra, rb, j1 * c.tangent1 + j2 * c.tangent2);
     c.total_tangent_impulse1 += j1;
     c.total_tangent_impulse2 += j2;
   }
