@@ -170,9 +170,14 @@ int edge_contact(const BoxFrame& a, const BoxFrame& b, int i, int j, const Vec3&
 int collide_boxes(const Body& body_a, int ia, const Body& body_b, int ib, Real margin, std::vector<Contact>& out) {
   const BoxFrame a{body_a.position, body_a.orientation.toRotationMatrix(), body_a.shape.half_extents};
   const BoxFrame b{body_b.position, body_b.orientation.toRotationMatrix(), body_b.shape.half_extents};
+  const Vec3 d = b.centre - a.centre;
+  // The world axes first: cheap, and where they separate the boxes farther than the other axes
+  // do, they keep a speculative contact from starting too early (and agree with the broad phase).
+  const Vec3 reach = a.axes.cwiseAbs() * a.half + b.axes.cwiseAbs() * b.half;
+  if ((d.cwiseAbs() - reach).maxCoeff() > margin) return 0;
+
   const Mat3 c = a.axes.transpose() * b.axes;  // c(i, j) = A's axis i . B's axis j
   const Mat3 abs_c = c.cwiseAbs();
-  const Vec3 d = b.centre - a.centre;
   const Vec3 da = a.axes.transpose() * d;  // in A's frame
   const Vec3 db = b.axes.transpose() * d;  // in B's frame
 

@@ -1,3 +1,4 @@
+// Contacts of a step: sweep-and-prune pairs, then the narrow phase on each.
 #include "physics/contact_finder.h"
 
 #include "physics/collide.h"
@@ -12,14 +13,19 @@ Real motion_bound(const Body& body, Real dt) {
 void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint8_t>& awake, Real dt,
                          Real base_margin, std::vector<Contact>& out) {
   out.clear();
-  // All pairs for now: O(n^2).
-  for (int i = 0; i < int(bodies.size()); ++i) {
-    for (int j = i + 1; j < int(bodies.size()); ++j) {
-      if (!awake[i] && !awake[j]) continue;
-      const Body& a = bodies[i];
-      const Body& b = bodies[j];
-      collide(a, i, b, j, base_margin + motion_bound(a, dt) + motion_bound(b, dt), out);
-    }
+  // Each box grows by its body's share of a pair's margin, so that two boxes overlap whenever
+  // their shapes are within base_margin + motion_bound(a) + motion_bound(b).
+  const size_t n = bodies.size();
+  boxes_.resize(n);
+  motion_bounds_.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    motion_bounds_[i] = motion_bound(bodies[i], dt);
+    boxes_[i] = body_aabb(bodies[i], base_margin / 2 + motion_bounds_[i]);
+  }
+  broad_phase_.find_pairs(boxes_, awake, pairs_);
+  for (const BodyPair& pair : pairs_) {
+    const Real margin = base_margin + motion_bounds_[pair.a] + motion_bounds_[pair.b];
+    collide(bodies[pair.a], pair.a, bodies[pair.b], pair.b, margin, out);
   }
 }
 
