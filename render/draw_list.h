@@ -11,11 +11,28 @@ using Quatf = Eigen::Quaternionf;
 
 struct Colour { float r = 0.8f, g = 0.8f, b = 0.8f; };
 
-// spin_marks darkens alternate octants of the sphere so its rotation is visible.
-struct SphereItem { Vec3f centre; float radius = 0.5f; Quatf orientation = Quatf::Identity(); Colour colour; bool spin_marks = true; };
-struct BoxItem { Vec3f centre; Vec3f half_extents{0.5f, 0.5f, 0.5f}; Quatf orientation = Quatf::Identity(); Colour colour; };
+// spin_marks darkens alternate octants of the sphere so its rotation is visible. A sleeping body
+// is drawn pale and hatched, so it reads as asleep without relying on colour.
+struct SphereItem {
+  Vec3f centre;
+  float radius = 0.5f;
+  Quatf orientation = Quatf::Identity();
+  Colour colour;
+  bool spin_marks = true;
+  bool sleeping = false;
+};
+struct BoxItem {
+  Vec3f centre;
+  Vec3f half_extents{0.5f, 0.5f, 0.5f};
+  Quatf orientation = Quatf::Identity();
+  Colour colour;
+  bool sleeping = false;
+};
 // An arrow from `origin` along `direction` (its length is the arrow's length in metres).
+// Arrows and points are drawn in flat colours, and faintly where a body hides them.
 struct ArrowItem { Vec3f origin; Vec3f direction; Colour colour; };
+// A dot of a fixed size on screen (e.g. a contact point), whatever its distance.
+struct PointItem { Vec3f position; Colour colour; float radius_pixels = 4.0f; };
 
 struct Camera {
   Vec3f position{0.0f, 3.0f, 10.0f};
@@ -26,12 +43,15 @@ struct Camera {
 struct DrawList {
   Camera camera;
   Colour background{0.92f, 0.94f, 0.97f};
-  Vec3f towards_light{-0.45f, 1.0f, 0.6f};  // direction to the one directional light (any length)
+  // Direction to the one directional light (any length): high, so a shadow falls almost straight
+  // below its body and the gap between them shows the height.
+  Vec3f towards_light{-0.3f, 1.0f, 0.35f};
   bool ground = true;         // the plane y = ground_height
   float ground_height = 0.0f;
   std::vector<SphereItem> spheres;
   std::vector<BoxItem> boxes;
   std::vector<ArrowItem> arrows;
+  std::vector<PointItem> points;
 };
 
 }  // namespace impulse::render

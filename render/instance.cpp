@@ -12,7 +12,7 @@ constexpr float kMinimumScale = 1e-6f;
 
 // model = T * R * S, so its inverse transpose is R * S^-1: no general inverse needed.
 Instance make_instance(const Vec3f& translation, const Quatf& rotation, const Vec3f& scale, const Colour& colour,
-                       InstanceStyle style) {
+                       int style) {
   const Vec3f safe_scale = scale.cwiseMax(kMinimumScale);
   Instance instance{};
   Eigen::Map<Eigen::Matrix4f>(instance.model) = place(translation, rotation, safe_scale);
@@ -28,30 +28,17 @@ Instance make_instance(const Vec3f& translation, const Quatf& rotation, const Ve
 }  // namespace
 
 Instance sphere_instance(const SphereItem& sphere) {
-  const InstanceStyle style = sphere.spin_marks ? InstanceStyle::spin_marks : InstanceStyle::plain;
+  const int style = (sphere.spin_marks ? spin_marks : plain) | (sphere.sleeping ? sleeping : plain);
   return make_instance(sphere.centre, sphere.orientation, Vec3f::Constant(sphere.radius), sphere.colour, style);
 }
 
 Instance box_instance(const BoxItem& box) {
-  return make_instance(box.centre, box.orientation, box.half_extents, box.colour, InstanceStyle::edges);
+  return make_instance(box.centre, box.orientation, box.half_extents, box.colour,
+                       edges | (box.sleeping ? sleeping : plain));
 }
 
-bool arrow_instances(const ArrowItem& arrow, ArrowInstances& out) {
-  const float length = arrow.direction.norm();
-  if (!(length > 1e-5f)) return false;  // also rejects NaN
-  const Vec3f axis = arrow.direction / length;
-  const Quatf rotation = Quatf::FromTwoVectors(Vec3f::UnitY(), axis);
-
-  const float head_length = std::min(0.35f * length, 0.3f);
-  const float head_radius = 0.38f * head_length;
-  const float shaft_radius = 0.42f * head_radius;
-  const float shaft_length = length - head_length;
-
-  out.shaft = make_instance(arrow.origin, rotation, Vec3f(shaft_radius, shaft_length, shaft_radius), arrow.colour,
-                            InstanceStyle::plain);
-  out.head = make_instance(arrow.origin + axis * shaft_length, rotation,
-                           Vec3f(head_radius, head_length, head_radius), arrow.colour, InstanceStyle::plain);
-  return true;
+Instance point_instance(const Vec3f& position, float radius, const Colour& colour) {
+  return make_instance(position, Quatf::Identity(), Vec3f::Constant(radius), colour, plain);
 }
 
 }  // namespace impulse::render

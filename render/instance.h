@@ -1,5 +1,5 @@
 // Per-instance data the mesh programs read (vertex attributes 2..10, see shaders.h), and how
-// each DrawList item becomes instances of the unit meshes in mesh.h.
+// spheres, boxes and points become instances of the unit meshes in mesh.h (or impostor quads).
 #pragma once
 #include <vector>
 
@@ -7,25 +7,19 @@
 
 namespace impulse::render {
 
-enum class InstanceStyle { plain = 0, spin_marks = 1, edges = 2 };
+// Bit flags, passed to the shaders as a float attribute (see shaders.cpp, kSurface).
+enum InstanceStyle : int { plain = 0, spin_marks = 1, edges = 2, sleeping = 4 };
 
 struct Instance {
   float model[16];          // column-major, unit mesh -> world
   float normal_matrix[9];   // column-major inverse transpose of the model's 3x3 part
   float colour[3];          // sRGB
-  float style;              // InstanceStyle as a float attribute
+  float style;              // InstanceStyle flags as a float attribute
 };
 static_assert(sizeof(Instance) == 29 * sizeof(float), "Instance must stay tightly packed");
 
-Instance sphere_instance(const SphereItem& sphere);  // of make_icosphere
+Instance sphere_instance(const SphereItem& sphere);  // of make_icosphere, or an impostor quad
 Instance box_instance(const BoxItem& box);           // of make_cube
-
-struct ArrowInstances {
-  Instance shaft;  // of make_cylinder
-  Instance head;   // of make_cone
-};
-// Shaft and head sizes grow with the arrow's length up to a limit, so short arrows stay arrows
-// and long ones stay slim. Returns false (and nothing) for an arrow shorter than 1e-5 m.
-bool arrow_instances(const ArrowItem& arrow, ArrowInstances& out);
+Instance point_instance(const Vec3f& position, float radius, const Colour& colour);  // a plain sphere
 
 }  // namespace impulse::render

@@ -3,7 +3,6 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <map>
-#include <numbers>
 #include <utility>
 
 namespace impulse::render {
@@ -18,23 +17,6 @@ uint32_t add_vertex(MeshData& mesh, const Vec3& position, const Vec3& normal) {
 
 void add_triangle(MeshData& mesh, uint32_t a, uint32_t b, uint32_t c) {
   mesh.indices.insert(mesh.indices.end(), {a, b, c});
-}
-
-Vec3 ring_point(int segment, int segments, float y) {
-  const float angle = 2.0f * std::numbers::pi_v<float> * static_cast<float>(segment) / static_cast<float>(segments);
-  return {std::cos(angle), y, std::sin(angle)};
-}
-
-// A disc at height y facing -y (the bottom of cylinders and cones).
-void add_bottom_cap(MeshData& mesh, int segments) {
-  const Vec3 down(0.0f, -1.0f, 0.0f);
-  const uint32_t centre = add_vertex(mesh, Vec3::Zero(), down);
-  const uint32_t first = static_cast<uint32_t>(mesh.vertices.size());
-  for (int i = 0; i < segments; ++i) add_vertex(mesh, ring_point(i, segments, 0.0f), down);
-  for (int i = 0; i < segments; ++i) {
-    const uint32_t next = first + static_cast<uint32_t>((i + 1) % segments);
-    add_triangle(mesh, centre, first + static_cast<uint32_t>(i), next);
-  }
 }
 
 }  // namespace
@@ -94,40 +76,6 @@ MeshData make_cube() {
       add_triangle(mesh, first, first + 2, first + 3);
     }
   }
-  return mesh;
-}
-
-MeshData make_cylinder(int segments) {
-  MeshData mesh;
-  for (int i = 0; i <= segments; ++i) {
-    const Vec3 bottom = ring_point(i, segments, 0.0f);
-    const Vec3 normal(bottom.x(), 0.0f, bottom.z());
-    add_vertex(mesh, bottom, normal);
-    add_vertex(mesh, bottom + Vec3::UnitY(), normal);
-  }
-  for (int i = 0; i < segments; ++i) {
-    const auto b0 = static_cast<uint32_t>(2 * i), t0 = b0 + 1, b1 = b0 + 2, t1 = b0 + 3;
-    add_triangle(mesh, b0, t0, b1);
-    add_triangle(mesh, b1, t0, t1);
-  }
-  add_bottom_cap(mesh, segments);
-  return mesh;
-}
-
-MeshData make_cone(int segments) {
-  MeshData mesh;
-  // Side: one apex vertex per segment so each gets the normal of its own slice.
-  for (int i = 0; i < segments; ++i) {
-    const Vec3 base0 = ring_point(i, segments, 0.0f);
-    const Vec3 base1 = ring_point(i + 1, segments, 0.0f);
-    const Vec3 middle = ring_point(2 * i + 1, 2 * segments, 0.0f);
-    // Surface sqrt(x^2 + z^2) + y = 1 has gradient (cos, 1, sin).
-    const uint32_t b0 = add_vertex(mesh, base0, Vec3(base0.x(), 1.0f, base0.z()).normalized());
-    const uint32_t apex = add_vertex(mesh, Vec3::UnitY(), Vec3(middle.x(), 1.0f, middle.z()).normalized());
-    const uint32_t b1 = add_vertex(mesh, base1, Vec3(base1.x(), 1.0f, base1.z()).normalized());
-    add_triangle(mesh, b0, apex, b1);
-  }
-  add_bottom_cap(mesh, segments);
   return mesh;
 }
 

@@ -18,8 +18,6 @@ struct MeshData {
 
 MeshData make_icosphere(int subdivisions);  // radius 1, smooth normals; 20 * 4^subdivisions triangles
 MeshData make_cube();                       // [-1, 1]^3, flat normals
-MeshData make_cylinder(int segments);       // radius 1, y in [0, 1], smooth side, capped at y = 0
-MeshData make_cone(int segments);           // base radius 1 at y = 0, apex at y = 1, capped base
 MeshData make_quad();                       // [-1, 1]^2 in x, z at y = 0, facing +y
 
 }  // namespace impulse::render

@@ -1,56 +1,36 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
+#include "render/camera_view.h"
 #include "render/gl.h"
 #include "render/gl_context.h"
+#include "render/flat_arrows.h"
+#include "render/flat_mesh.h"
 #include "render/gpu_mesh.h"
 #include "render/instance.h"
+#include "render/level_of_detail.h"
 #include "render/mesh.h"
 #include "render/offscreen_target.h"
 #include "render/shader.h"
 #include "render/shaders.h"
 #include "render/shadow_map.h"
-#include "render/transforms.h"
 
 namespace impulse::render {
 namespace {
 
-constexpr int kSphereSubdivisions = 4;
-constexpr int kArrowSegments = 24;
 constexpr GLuint kShadowTextureUnit = 0;
+constexpr float kOutlineTolerancePixels = 0.25f;  // how far a tessellated outline may stray
 constexpr float kArrowGhostAlpha = 0.45f;  // the parts of arrows hidden behind bodies, drawn flat
-constexpr float kArrowAmbientLift = 0.35f;  // arrows read as flat, uniform colours
 const Vec3f kGroundColour(0.84f, 0.85f, 0.86f);
 
 Vec3f to_vector(const Colour& colour) { return {colour.r, colour.g, colour.b}; }
-
-struct CameraMatrices {
-  Eigen::Matrix4f view_projection;
-  float distance_to_target;
-  float far_distance;
-};
-
-CameraMatrices camera_matrices(const Camera& camera, float aspect) {
-  const Vec3f view = camera.target - camera.position;
-  const float distance = view.norm();
-  if (!(distance > 1e-6f) || !view.allFinite()) {
-    throw std::invalid_argument("renderer: camera position must differ from its target");
-  }
-  // Looking straight down or up, screen-up becomes -z (away from the default camera).
-  const Vec3f up = std::abs(view.y()) > 0.999f * distance ? Vec3f(-Vec3f::UnitZ()) : Vec3f(Vec3f::UnitY());
-  const float near_distance = std::clamp(0.01f * distance, 0.01f, 1.0f);
-  const float far_distance = 60.0f * std::max(distance, 10.0f);
-  const float fov = std::clamp(camera.fov_y_degrees, 1.0f, 170.0f) * std::numbers::pi_v<float> / 180.0f;
-  return {perspective(fov, aspect, near_distance, far_distance) * look_at(camera.position, camera.target, up),
-          distance, far_distance};
-}
 
 // GL records errors instead of failing calls; one check per frame catches e.g. out-of-memory.
 void throw_on_gl_error(const char* during) {
@@ -63,30 +43,66 @@ void throw_on_gl_error(const char* during) {
   throw std::runtime_error(message);
 }
 
+// Where the multisamples of a pixel lie, relative to its centre, as the impostor shader needs.
+std::vector<float> sample_offsets(const OffscreenTarget& target) {
+  std::vector<float> offsets;
+  target.bind_for_drawing();
+  for (int i = 0; i < std::max(target.samples(), 1); ++i) {
+    GLfloat position[2] = {0.5f, 0.5f};
+    if (target.samples() > 0) glGetMultisamplefv(GL_SAMPLE_POSITION, static_cast<GLuint>(i), position);
+    offsets.push_back(position[0] - 0.5f);
+    offsets.push_back(position[1] - 0.5f);
+  }
+  return offsets;
+}
+
+// One icosphere per subdivision level 0 .. N-1.
+template <size_t N>
+std::array<GpuMesh, N> make_sphere_levels() {
+  return []<size_t... Level>(std::index_sequence<Level...>) {
+    return std::array<GpuMesh, N>{GpuMesh(make_icosphere(static_cast<int>(Level)))...};
+  }(std::make_index_sequence<N>{});
+}
+
 }  // namespace
 
 struct Renderer::Gpu {
   // Declared first: destroyed last, after every GL object below.
   GlContext context;
+  RendererSettings settings;
   ShaderProgram lit{"lit", shaders::lit_vertex(), shaders::lit_fragment()};
+  ShaderProgram impostor{"impostor", shaders::impostor_vertex(), shaders::impostor_fragment()};
   ShaderProgram ground{"ground", shaders::ground_vertex(), shaders::ground_fragment()};
-  ShaderProgram shadow{"shadow", shaders::shadow_vertex(), ""};
-  GpuMesh sphere_mesh{make_icosphere(kSphereSubdivisions)};
+  ShaderProgram depth_only{"shadow", shaders::shadow_vertex(), ""};
+  ShaderProgram impostor_shadow{"impostor shadow", shaders::impostor_shadow_vertex(),
+                                shaders::impostor_shadow_fragment()};
+  std::array<GpuMesh, kMaxSphereLevel + 1> sphere_levels = make_sphere_levels<kMaxSphereLevel + 1>();
+  ShaderProgram flat{"flat", shaders::flat_vertex(), shaders::flat_fragment()};
+  FlatMesh arrow_mesh;
   GpuMesh cube_mesh{make_cube()};
-  GpuMesh shaft_mesh{make_cylinder(kArrowSegments)};
-  GpuMesh head_mesh{make_cone(kArrowSegments)};
+  GpuMesh sphere_quads{make_quad()};
+  GpuMesh point_quads{make_quad()};
   GpuMesh ground_mesh{make_quad()};
   OffscreenTarget target;
   std::optional<ShadowMap> shadow_map;
 
   // Scratch, kept to reuse their memory from frame to frame.
-  std::vector<Instance> spheres, boxes, shafts, heads;
+  std::array<std::vector<Instance>, kMaxSphereLevel + 1> spheres_by_level;
+  std::vector<Instance> spheres, boxes, points;
+  std::vector<FlatVertex> arrows;
 
-  Gpu(int width, int height, const RendererSettings& settings) : target(width, height, settings.samples) {
+  Gpu(int width, int height, const RendererSettings& renderer_settings)
+      : settings(renderer_settings), target(width, height, renderer_settings.samples) {
     if (settings.shadow_map_size > 0) shadow_map.emplace(settings.shadow_map_size);
     ground_mesh.upload({Instance{}});  // the ground shader places the quad itself
-    lit.set("u_shadow_map", static_cast<int>(kShadowTextureUnit));
-    ground.set("u_shadow_map", static_cast<int>(kShadowTextureUnit));
+    for (const ShaderProgram* program : {&lit, &impostor, &ground}) {
+      program->set("u_shadow_map", static_cast<int>(kShadowTextureUnit));
+    }
+    const std::vector<float> offsets = sample_offsets(target);
+    impostor.use();
+    glUniform2fv(glGetUniformLocation(impostor.id(), "u_sample_offsets"), static_cast<GLsizei>(offsets.size() / 2),
+                 offsets.data());
+    impostor.set("u_sample_count", static_cast<int>(offsets.size() / 2));
     throw_on_gl_error("setup");
   }
   ~Gpu() {
@@ -95,7 +111,113 @@ struct Renderer::Gpu {
     } catch (...) {
     }
   }
+
+  void collect(const DrawList& draw_list, const CameraView& camera);
+  void draw_shadows(const ShadowFrustum& shadow, const Vec3f& towards_light);
+  void draw_bodies();
+  void draw_marks();  // arrows and points
+  void draw_ground(const DrawList& draw_list, const CameraView& camera);
 };
+
+// Sorts every item into the instance lists of the meshes that draw it, and uploads them.
+void Renderer::Gpu::collect(const DrawList& draw_list, const CameraView& camera) {
+  for (auto& list : spheres_by_level) list.clear();
+  spheres.clear();
+  boxes.clear();
+  points.clear();
+  arrows.clear();
+
+  for (const SphereItem& sphere : draw_list.spheres) {
+    spheres.push_back(sphere_instance(sphere));
+    if (settings.spheres == SphereMethod::tessellated) {
+      const float radius_pixels = sphere.radius * camera.pixels_per_metre(sphere.centre);
+      spheres_by_level[sphere_level(radius_pixels, kOutlineTolerancePixels)].push_back(spheres.back());
+    }
+  }
+  for (const BoxItem& box : draw_list.boxes) boxes.push_back(box_instance(box));
+  for (const ArrowItem& arrow : draw_list.arrows) append_flat_arrow(arrow, camera, arrows);
+  for (const PointItem& point : draw_list.points) {
+    const float pixels_per_metre = camera.pixels_per_metre(point.position);
+    if (!(pixels_per_metre > 0.0f) || !(point.radius_pixels > 0.0f)) continue;
+    points.push_back(point_instance(point.position, point.radius_pixels / pixels_per_metre, point.colour));
+  }
+
+  sphere_quads.upload(spheres);
+  for (int level = 0; level <= kMaxSphereLevel; ++level) sphere_levels[level].upload(spheres_by_level[level]);
+  cube_mesh.upload(boxes);
+  arrow_mesh.upload(arrows);
+  point_quads.upload(points);
+}
+
+// Depth of spheres (always ray-cast: exact and cheap) and boxes as the light sees them.
+void Renderer::Gpu::draw_shadows(const ShadowFrustum& shadow, const Vec3f& towards_light) {
+  shadow_map->bind_for_drawing();
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.5f, 2.0f);
+  depth_only.use();
+  depth_only.set("u_view_projection", shadow.view_projection);
+  cube_mesh.draw();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  impostor_shadow.use();
+  impostor_shadow.set("u_view_projection", shadow.view_projection);
+  impostor_shadow.set("u_light_direction", towards_light);
+  sphere_quads.draw();
+  shadow_map->bind_texture(kShadowTextureUnit);
+}
+
+void Renderer::Gpu::draw_bodies() {
+  glEnable(GL_CULL_FACE);
+  lit.use();
+  lit.set("u_alpha", 1.0f);
+  lit.set("u_ambient_lift", 0.0f);
+  cube_mesh.draw();
+  if (settings.spheres == SphereMethod::tessellated) {
+    for (const GpuMesh& level : sphere_levels) level.draw();
+  } else {
+    glDisable(GL_CULL_FACE);
+    impostor.use();
+    impostor.set("u_alpha", 1.0f);
+    impostor.set("u_ambient_lift", 0.0f);
+    sphere_quads.draw();
+  }
+}
+
+// Arrows and points: first a faint ghost of the parts hidden behind bodies, then the visible parts.
+void Renderer::Gpu::draw_marks() {
+  auto draw_all = [&](float alpha) {
+    glDisable(GL_CULL_FACE);
+    flat.use();
+    flat.set("u_alpha", alpha);
+    arrow_mesh.draw();
+    impostor.use();
+    impostor.set("u_alpha", alpha);
+    impostor.set("u_ambient_lift", 1.0f);
+    point_quads.draw();
+  };
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthFunc(GL_GREATER);
+  glDepthMask(GL_FALSE);
+  draw_all(kArrowGhostAlpha);
+  glDisable(GL_BLEND);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  draw_all(1.0f);
+}
+
+void Renderer::Gpu::draw_ground(const DrawList& draw_list, const CameraView& camera) {
+  const Vec3f centre(draw_list.camera.target.x(), draw_list.ground_height, draw_list.camera.target.z());
+  ground.use();
+  ground.set("u_ground_centre", centre);
+  ground.set("u_ground_half_size", 0.7f * camera.far_distance);
+  ground.set("u_background", to_vector(draw_list.background));
+  ground.set("u_ground_colour", kGroundColour);
+  ground.set("u_fog_start", 2.5f * camera.distance_to_target);
+  ground.set("u_fog_end", 0.25f * camera.far_distance);
+  glDisable(GL_CULL_FACE);  // visible from below too
+  ground_mesh.draw();
+}
 
 Renderer::Renderer(int width, int height, RendererSettings settings)
     : gpu_(std::make_unique<Gpu>(width, height, settings)) {}
@@ -104,68 +226,40 @@ Renderer::~Renderer() = default;
 
 int Renderer::width() const { return gpu_->target.width(); }
 int Renderer::height() const { return gpu_->target.height(); }
+const RendererSettings& Renderer::settings() const { return gpu_->settings; }
 
 const Frame& Renderer::draw(const DrawList& draw_list) {
+  draw_into(draw_list, frame_);
+  return frame_;
+}
+
+void Renderer::draw_into(const DrawList& draw_list, Frame& frame) {
   Gpu& gpu = *gpu_;
   gpu.context.make_current();
 
-  const float aspect = static_cast<float>(width()) / static_cast<float>(height());
-  const CameraMatrices camera = camera_matrices(draw_list.camera, aspect);
+  const CameraView camera = make_camera_view(draw_list.camera, width(), height());
   const float light_length = draw_list.towards_light.norm();
   const Vec3f towards_light = std::isfinite(light_length) && light_length > 1e-6f
                                   ? Vec3f(draw_list.towards_light / light_length)
                                   : Vec3f(DrawList{}.towards_light.normalized());
-
-  gpu.spheres.clear();
-  gpu.boxes.clear();
-  gpu.shafts.clear();
-  gpu.heads.clear();
-  for (const SphereItem& sphere : draw_list.spheres) gpu.spheres.push_back(sphere_instance(sphere));
-  for (const BoxItem& box : draw_list.boxes) gpu.boxes.push_back(box_instance(box));
-  for (const ArrowItem& arrow : draw_list.arrows) {
-    ArrowInstances parts;
-    if (!arrow_instances(arrow, parts)) continue;
-    gpu.shafts.push_back(parts.shaft);
-    gpu.heads.push_back(parts.head);
-  }
-  gpu.sphere_mesh.upload(gpu.spheres);
-  gpu.cube_mesh.upload(gpu.boxes);
-  gpu.shaft_mesh.upload(gpu.shafts);
-  gpu.head_mesh.upload(gpu.heads);
+  gpu.collect(draw_list, camera);
 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
 
-  // Shadow pass: depth of spheres and boxes as the light sees them.
   ShadowFrustum shadow;
-  if (gpu.shadow_map) {
-    shadow = fit_shadow_frustum(draw_list, towards_light, gpu.shadow_map->size());
-  }
-  if (shadow.has_casters) {
-    gpu.shadow_map->bind_for_drawing();
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1.5f, 2.0f);
-    gpu.shadow.use();
-    gpu.shadow.set("u_view_projection", shadow.view_projection);
-    gpu.sphere_mesh.draw();
-    gpu.cube_mesh.draw();
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    gpu.shadow_map->bind_texture(kShadowTextureUnit);
-  }
+  if (gpu.shadow_map) shadow = fit_shadow_frustum(draw_list, towards_light, gpu.shadow_map->size());
+  if (shadow.has_casters) gpu.draw_shadows(shadow, towards_light);
 
-  // Main pass.
   gpu.target.bind_for_drawing();
   const Colour& background = draw_list.background;
   glClearColor(background.r, background.g, background.b, 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_CULL_FACE);
-  glCullFace(GL_BACK);
-
-  for (const ShaderProgram* program : {&gpu.lit, &gpu.ground}) {
+  gpu.flat.set("u_view_projection", camera.view_projection);
+  for (const ShaderProgram* program : {&gpu.lit, &gpu.impostor, &gpu.ground}) {
     program->set("u_view_projection", camera.view_projection);
     program->set("u_light_direction", towards_light);
     program->set("u_camera_position", draw_list.camera.position);
@@ -173,47 +267,13 @@ const Frame& Renderer::draw(const DrawList& draw_list) {
     program->set("u_shadows_enabled", shadow.has_casters ? 1 : 0);
     program->set("u_shadow_texel_world", shadow.texel_world);
   }
+  // Bodies first, then the ground: the depth test skips the ground's pixels that bodies hide.
+  gpu.draw_bodies();
+  if (draw_list.ground) gpu.draw_ground(draw_list, camera);
+  gpu.draw_marks();
 
-  if (draw_list.ground) {
-    const Vec3f centre(draw_list.camera.target.x(), draw_list.ground_height, draw_list.camera.target.z());
-    gpu.ground.use();
-    gpu.ground.set("u_ground_centre", centre);
-    gpu.ground.set("u_ground_half_size", 0.7f * camera.far_distance);
-    gpu.ground.set("u_background", to_vector(background));
-    gpu.ground.set("u_ground_colour", kGroundColour);
-    gpu.ground.set("u_fog_start", 2.5f * camera.distance_to_target);
-    gpu.ground.set("u_fog_end", 0.25f * camera.far_distance);
-    glDisable(GL_CULL_FACE);  // visible from below too
-    gpu.ground_mesh.draw();
-    glEnable(GL_CULL_FACE);
-  }
-
-  gpu.lit.use();
-  gpu.lit.set("u_alpha", 1.0f);
-  gpu.lit.set("u_ambient_lift", 0.0f);
-  gpu.sphere_mesh.draw();
-  gpu.cube_mesh.draw();
-
-  // Arrows: first a faint ghost of the parts hidden behind bodies, then the visible parts.
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  glDepthFunc(GL_GREATER);
-  glDepthMask(GL_FALSE);
-  gpu.lit.set("u_alpha", kArrowGhostAlpha);
-  gpu.lit.set("u_ambient_lift", 1.0f);
-  gpu.shaft_mesh.draw();
-  gpu.head_mesh.draw();
-  glDisable(GL_BLEND);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  gpu.lit.set("u_alpha", 1.0f);
-  gpu.lit.set("u_ambient_lift", kArrowAmbientLift);
-  gpu.shaft_mesh.draw();
-  gpu.head_mesh.draw();
-
-  gpu.target.resolve_into(frame_);
+  gpu.target.resolve_into(frame);
   throw_on_gl_error("draw");
-  return frame_;
 }
 
 }  // namespace impulse::render

@@ -1,5 +1,5 @@
 // Draws a DrawList into an RGBA Frame with OpenGL 4.5 core on an offscreen OSMesa context:
-// shadowed, lit spheres, boxes and arrows over a gridded ground plane.
+// shadowed, lit spheres, boxes, arrows and points over a gridded ground plane, multisampled.
 // Each Renderer owns its own GL context; use it from one thread at a time.
 #pragma once
 #include <memory>
@@ -9,9 +9,17 @@
 
 namespace impulse::render {
 
+// How spheres become pixels. Both give outlines within a quarter pixel of a true circle at any
+// size; tests/bench/render_bench measures both (README.md, "Speed").
+enum class SphereMethod {
+  impostor,     // a quad per sphere, ray-cast per multisample in the fragment shader
+  tessellated,  // an icosphere per sphere, subdivided by its size on screen
+};
+
 struct RendererSettings {
   int samples = 4;              // multisample anti-aliasing; 0 turns it off
   int shadow_map_size = 2048;   // 0 turns shadows off
+  SphereMethod spheres = SphereMethod::impostor;
 };
 
 class Renderer {
@@ -25,9 +33,12 @@ class Renderer {
   // The returned frame is owned by the renderer and overwritten by the next draw().
   // Throws std::invalid_argument if the camera's position equals its target.
   const Frame& draw(const DrawList& draw_list);
+  // The same, into a frame of the caller's (resized as needed): lets a pipeline keep several.
+  void draw_into(const DrawList& draw_list, Frame& frame);
 
   int width() const;
   int height() const;
+  const RendererSettings& settings() const;
 
  private:
   struct Gpu;  // every GL object, behind one pointer so this header stays free of GL

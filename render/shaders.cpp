@@ -15,11 +15,11 @@ uniform sampler2DShadow u_shadow_map;
 uniform int u_shadows_enabled;
 uniform float u_shadow_texel_world; // size of one shadow-map texel in metres
 
-vec3 to_linear(vec3 srgb) { return pow(srgb, vec3(2.2)); }
-vec3 to_display(vec3 linear) { return pow(clamp(linear, 0.0, 1.0), vec3(1.0 / 2.2)); }
+vec3 to_linear(vec3 srgb) { return srgb * srgb; }  // gamma 2, close to sRGB and cheap on llvmpipe
+vec3 to_display(vec3 linear) { return sqrt(clamp(linear, 0.0, 1.0)); }
 
-// 1 = fully lit, 0 = in shadow. Normal offset plus a small depth bias avoid acne; 3x3 taps of
-// the hardware 2x2 filter give a soft edge.
+// 1 = fully lit, 0 = in shadow. Normal offset plus a small depth bias avoid acne; the hardware
+// 2x2 filter of a linear shadow sampler softens the edge.
 float light_visibility(vec3 world, vec3 normal) {
   if (u_shadows_enabled == 0) return 1.0;
   float facing = dot(normal, u_light_direction);
@@ -29,13 +29,7 @@ float light_visibility(vec3 world, vec3 normal) {
   vec3 coords = clip.xyz / clip.w * 0.5 + 0.5;
   if (any(lessThan(coords.xy, vec2(0.0))) || any(greaterThan(coords.xy, vec2(1.0)))) return 1.0;
   float reference = min(coords.z, 1.0) - 0.0005;
-  vec2 texel = 1.0 / vec2(textureSize(u_shadow_map, 0));
-  float sum = 0.0;
-  sum += texture(u_shadow_map, vec3(coords.xy + vec2(-0.5, -0.5) * texel, reference));
-  sum += texture(u_shadow_map, vec3(coords.xy + vec2(0.5, -0.5) * texel, reference));
-  sum += texture(u_shadow_map, vec3(coords.xy + vec2(-0.5, 0.5) * texel, reference));
-  sum += texture(u_shadow_map, vec3(coords.xy + vec2(0.5, 0.5) * texel, reference));
-  return sum / 4.0;
+  return texture(u_shadow_map, vec3(coords.xy, reference));  // GL_LINEAR: a 2x2 percentage-closer filter
 }
 
 // Hemisphere ambient + Lambert + a little Blinn-Phong, in linear light.
@@ -49,6 +43,54 @@ vec3 shade(vec3 albedo, vec3 world, vec3 normal, float specular_strength) {
   float specular = diffuse > 0.0 ? pow(max(dot(normal, halfway), 0.0), 60.0) * specular_strength : 0.0;
   vec3 sun = vec3(1.0, 0.98, 0.94) * 0.82;
   return albedo * (ambient + sun * diffuse * visibility) + sun * specular * visibility;
+}
+)";
+
+// Surface styles (InstanceStyle flags) and the final colour, shared by meshes and impostors.
+constexpr const char* kSurface = R"(
+uniform float u_alpha;
+uniform float u_ambient_lift;  // arrows and points: flat, uniform colour
+
+const int kStyleSpinMarks = 1;  // sphere: alternate octants darker so rotation is visible
+const int kStyleEdges = 2;      // box: thin dark outline along the edges
+const int kStyleSleeping = 4;   // pale and hatched: asleep, whatever the viewer's colour vision
+
+float octant_shade(vec3 p) {
+  float dark = step(0.0, p.x * p.y * p.z);
+  vec3 pixels_to_boundary = abs(p) / max(fwidth(p), vec3(1e-6));
+  float blend = clamp(min(min(pixels_to_boundary.x, pixels_to_boundary.y), pixels_to_boundary.z), 0.0, 1.0);
+  return mix(1.0, 0.74, mix(0.5, dark, blend));
+}
+
+float edge_shade(vec3 p) {
+  vec3 pixels_to_edge = (1.0 - abs(p)) / max(fwidth(p), vec3(1e-6));
+  // The smallest distance belongs to the face we are on; the next one is to the nearest edge.
+  float smallest = min(min(pixels_to_edge.x, pixels_to_edge.y), pixels_to_edge.z);
+  float largest = max(max(pixels_to_edge.x, pixels_to_edge.y), pixels_to_edge.z);
+  float to_edge = pixels_to_edge.x + pixels_to_edge.y + pixels_to_edge.z - smallest - largest;
+  return mix(0.55, 1.0, smoothstep(0.6, 1.6, to_edge));
+}
+
+// Diagonal stripes in screen space, 8 pixels apart.
+float hatch_shade() {
+  float stripe = mod(gl_FragCoord.x + gl_FragCoord.y, 8.0);
+  return mix(1.0, 0.86, smoothstep(0.5, 1.5, stripe) * (1.0 - smoothstep(2.5, 3.5, stripe)));
+}
+
+vec4 surface_colour(vec3 srgb, int style, vec3 local, vec3 world, vec3 normal) {
+  vec3 albedo = to_linear(srgb);
+  float specular = 0.35;
+  if ((style & kStyleSleeping) != 0) {
+    float grey = dot(albedo, vec3(0.2126, 0.7152, 0.0722));
+    albedo = mix(albedo, vec3(grey), 0.55) * 0.55 + 0.42;
+    specular = 0.0;
+  }
+  if ((style & kStyleSpinMarks) != 0) albedo *= octant_shade(local);
+  if ((style & kStyleEdges) != 0) albedo *= edge_shade(local);
+  if ((style & kStyleSleeping) != 0) albedo *= hatch_shade();
+  vec3 lit = shade(albedo, world, normal, specular);
+  lit = mix(lit, albedo, u_ambient_lift);
+  return vec4(to_display(lit), u_alpha);
 }
 )";
 
@@ -68,7 +110,7 @@ uniform mat4 u_view_projection;
 out vec3 v_world;
 out vec3 v_normal;
 out vec3 v_local;
-out vec3 v_colour;
+flat out vec3 v_colour;
 flat out int v_style;
 
 void main() {
@@ -84,48 +126,130 @@ void main() {
 }
 
 std::string lit_fragment() {
-  return std::string(kVersion) + kLighting + R"(
+  return std::string(kVersion) + kLighting + kSurface + R"(
 in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_local;
-in vec3 v_colour;
+flat in vec3 v_colour;
 flat in int v_style;
 
-uniform float u_alpha;
-uniform float u_ambient_lift;  // arrows: flatter, more uniform colour
-
 out vec4 out_colour;
-
-const int kStylePlain = 0;
-const int kStyleSpinMarks = 1;  // sphere: alternate octants darker so rotation is visible
-const int kStyleEdges = 2;      // box: thin dark outline along the edges
-
-float octant_shade(vec3 p) {
-  float dark = step(0.0, p.x * p.y * p.z);
-  vec3 pixels_to_boundary = abs(p) / max(fwidth(p), vec3(1e-6));
-  float blend = clamp(min(min(pixels_to_boundary.x, pixels_to_boundary.y), pixels_to_boundary.z), 0.0, 1.0);
-  return mix(1.0, 0.74, mix(0.5, dark, blend));
-}
-
-float edge_shade(vec3 p) {
-  vec3 pixels_to_edge = (1.0 - abs(p)) / max(fwidth(p), vec3(1e-6));
-  // The smallest distance belongs to the face we are on; the next one is to the nearest edge.
-  float smallest = min(min(pixels_to_edge.x, pixels_to_edge.y), pixels_to_edge.z);
-  float largest = max(max(pixels_to_edge.x, pixels_to_edge.y), pixels_to_edge.z);
-  float to_edge = pixels_to_edge.x + pixels_to_edge.y + pixels_to_edge.z - smallest - largest;
-  return mix(0.55, 1.0, smoothstep(0.6, 1.6, to_edge));
-}
 
 void main() {
   vec3 normal = normalize(v_normal);
   if (!gl_FrontFacing) normal = -normal;
-  vec3 albedo = to_linear(v_colour);
-  if (v_style == kStyleSpinMarks) albedo *= octant_shade(v_local);
-  if (v_style == kStyleEdges) albedo *= edge_shade(v_local);
-  vec3 lit = shade(albedo, v_world, normal, 0.35);
-  lit = mix(lit, albedo, u_ambient_lift);
-  out_colour = vec4(to_display(lit), u_alpha);
+  out_colour = surface_colour(v_colour, v_style, v_local, v_world, normal);
 }
+)";
+}
+
+// A sphere impostor: a quad facing the eye through the sphere's centre, just large enough to hold
+// its outline (the tangent cone's circle: r d / sqrt(d^2 - r^2)). The fragment stage casts a ray
+// per multisample and keeps the samples that hit, so edges are as smooth as a mesh's under MSAA.
+std::string impostor_vertex() {
+  return std::string(kVersion) + R"(
+layout(location = 0) in vec3 in_position;  // unit quad: x, z in [-1, 1]
+layout(location = 2) in mat4 in_model;
+layout(location = 9) in vec3 in_colour;
+layout(location = 10) in float in_style;
+
+uniform mat4 u_view_projection;
+uniform vec3 u_camera_position;
+
+out vec3 v_world;
+flat out vec3 v_centre;
+flat out float v_radius;
+flat out mat3 v_to_local;
+flat out vec3 v_colour;
+flat out int v_style;
+
+void main() {
+  vec3 centre = in_model[3].xyz;
+  float radius = length(in_model[0].xyz);
+  vec3 to_centre = centre - u_camera_position;
+  float distance = length(to_centre);
+  vec3 forward = to_centre / distance;
+  vec3 helper = abs(forward.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+  vec3 right = normalize(cross(forward, helper));
+  vec3 up = cross(right, forward);
+  // The eye inside (or on) the sphere: nothing sensible to draw, collapse the quad.
+  float half_size = distance > 1.0001 * radius ? 1.01 * radius * distance / sqrt(distance * distance - radius * radius) : 0.0;
+  v_world = centre + (right * in_position.x + up * in_position.z) * half_size;
+  v_centre = centre;
+  v_radius = radius;
+  v_to_local = transpose(mat3(in_model)) / (radius * radius);  // R^T, from R * radius
+  v_colour = in_colour;
+  v_style = int(in_style + 0.5);
+  gl_Position = u_view_projection * vec4(v_world, 1.0);
+}
+)";
+}
+
+std::string impostor_fragment() {
+  return std::string(kVersion) + kLighting + kSurface + R"(
+in vec3 v_world;
+flat in vec3 v_centre;
+flat in float v_radius;
+flat in mat3 v_to_local;
+flat in vec3 v_colour;
+flat in int v_style;
+
+uniform mat4 u_view_projection;
+uniform vec2 u_sample_offsets[16];  // multisample positions relative to the pixel centre
+uniform int u_sample_count;
+
+layout(depth_less) out float gl_FragDepth;
+out vec4 out_colour;
+
+void main() {
+  vec3 eye_to_centre = v_centre - u_camera_position;
+  float centre_distance_squared = dot(eye_to_centre, eye_to_centre);
+  float radius_squared = v_radius * v_radius;
+  // Coverage: one ray per sample, through the quad's plane (linear, so derivatives are exact).
+  vec3 step_x = dFdx(v_world);
+  vec3 step_y = dFdy(v_world);
+  int mask = 0;
+  for (int i = 0; i < u_sample_count; ++i) {
+    vec3 direction = normalize(v_world + step_x * u_sample_offsets[i].x + step_y * u_sample_offsets[i].y - u_camera_position);
+    float along = dot(eye_to_centre, direction);
+    if (along * along - centre_distance_squared + radius_squared >= 0.0) mask |= 1 << i;
+  }
+  if (mask == 0) discard;
+  gl_SampleMask[0] = mask;
+
+  // Shade where the pixel centre's ray meets the sphere (on a partly covered pixel whose centre
+  // misses, the nearest point of the outline).
+  vec3 direction = normalize(v_world - u_camera_position);
+  float along = dot(eye_to_centre, direction);
+  float discriminant = max(along * along - centre_distance_squared + radius_squared, 0.0);
+  vec3 hit = u_camera_position + direction * (along - sqrt(discriminant));
+  vec3 normal = normalize(hit - v_centre);
+  vec4 clip = u_view_projection * vec4(hit, 1.0);
+  gl_FragDepth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
+  out_colour = surface_colour(v_colour, v_style, v_to_local * (hit - v_centre), hit, normal);
+}
+)";
+}
+
+std::string flat_vertex() {
+  return std::string(kVersion) + R"(
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_colour;
+uniform mat4 u_view_projection;
+flat out vec3 v_colour;
+void main() {
+  v_colour = in_colour;
+  gl_Position = u_view_projection * vec4(in_position, 1.0);
+}
+)";
+}
+
+std::string flat_fragment() {
+  return std::string(kVersion) + R"(
+flat in vec3 v_colour;
+uniform float u_alpha;
+out vec4 out_colour;
+void main() { out_colour = vec4(v_colour, u_alpha); }
 )";
 }
 
@@ -189,6 +313,54 @@ layout(location = 2) in mat4 in_model;
 uniform mat4 u_view_projection;
 
 void main() { gl_Position = u_view_projection * in_model * vec4(in_position, 1.0); }
+)";
+}
+
+// The light is directional and its projection orthographic: the quad faces the light through
+// the centre with the sphere's radius, and the depth is that of the near surface.
+std::string impostor_shadow_vertex() {
+  return std::string(kVersion) + R"(
+layout(location = 0) in vec3 in_position;
+layout(location = 2) in mat4 in_model;
+
+uniform mat4 u_view_projection;
+uniform vec3 u_light_direction;
+
+out vec2 v_offset;  // in the quad's plane, metres from the centre
+out vec3 v_world;
+flat out float v_radius;
+
+void main() {
+  vec3 centre = in_model[3].xyz;
+  float radius = length(in_model[0].xyz);
+  vec3 helper = abs(u_light_direction.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+  vec3 right = normalize(cross(u_light_direction, helper));
+  vec3 up = cross(right, u_light_direction);
+  v_offset = in_position.xz * (1.01 * radius);
+  v_world = centre + right * v_offset.x + up * v_offset.y;
+  v_radius = radius;
+  gl_Position = u_view_projection * vec4(v_world, 1.0);
+}
+)";
+}
+
+std::string impostor_shadow_fragment() {
+  return std::string(kVersion) + R"(
+in vec2 v_offset;
+in vec3 v_world;
+flat in float v_radius;
+
+uniform mat4 u_view_projection;
+uniform vec3 u_light_direction;
+
+layout(depth_less) out float gl_FragDepth;
+
+void main() {
+  float height_squared = v_radius * v_radius - dot(v_offset, v_offset);
+  if (height_squared < 0.0) discard;
+  vec4 clip = u_view_projection * vec4(v_world + u_light_direction * sqrt(height_squared), 1.0);
+  gl_FragDepth = clamp(clip.z * 0.5 + 0.5, 0.0, 1.0);
+}
 )";
 }
 

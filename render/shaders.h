@@ -1,18 +1,24 @@
 // GLSL 450 core sources of the renderer's programs.
 //
-// Vertex inputs shared by every mesh program (see instance_data.h):
+// Vertex inputs shared by every mesh program (see instance.h):
 //   0 position, 1 normal                    per vertex
 //   2..5 model matrix, 6..8 normal matrix,  per instance
-//   9 colour (sRGB), 10 style
+//   9 colour (sRGB), 10 style (InstanceStyle flags)
 #pragma once
 #include <string>
 
 namespace impulse::render::shaders {
 
-std::string lit_vertex();       // spheres, boxes, arrows
+std::string lit_vertex();       // tessellated spheres, boxes, arrows
 std::string lit_fragment();
+std::string impostor_vertex();  // spheres as ray-cast quads (the unit quad of make_quad)
+std::string impostor_fragment();
+std::string flat_vertex();      // flat-coloured triangles (arrows): 0 position, 1 colour
+std::string flat_fragment();
 std::string ground_vertex();    // one quad, placed by uniforms
 std::string ground_fragment();
 std::string shadow_vertex();    // depth only; no fragment stage
+std::string impostor_shadow_vertex();  // sphere impostors into the shadow map
+std::string impostor_shadow_fragment();
 
 }  // namespace impulse::render::shaders

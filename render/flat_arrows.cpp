@@ -1,0 +1,52 @@
+#include "render/flat_arrows.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impulse::render {
+namespace {
+
+constexpr float kMinShaftWidthPixels = 2.5f;
+constexpr float kMinHeadWidthPixels = 10.0f;
+
+void add(std::vector<FlatVertex>& triangles, const Vec3f& p, const Colour& colour) {
+  triangles.push_back({{p.x(), p.y(), p.z()}, {colour.r, colour.g, colour.b}});
+}
+
+}  // namespace
+
+void append_flat_arrow(const ArrowItem& arrow, const CameraView& camera, std::vector<FlatVertex>& triangles) {
+  const float length = arrow.direction.norm();
+  if (!(length > 1e-5f) || !arrow.origin.allFinite()) return;
+  const Vec3f axis = arrow.direction / length;
+  const Vec3f middle = arrow.origin + 0.5f * arrow.direction;
+  const float pixels_per_metre = camera.pixels_per_metre(middle);
+  if (!(pixels_per_metre > 0.0f)) return;
+
+  // Across the arrow, in the plane facing the camera; any perpendicular if it points at the eye.
+  Vec3f side = axis.cross(camera.position - middle);
+  if (side.squaredNorm() < 1e-12f) side = axis.unitOrthogonal();
+  side.normalize();
+
+  const float metres_per_pixel = 1.0f / pixels_per_metre;
+  const float head_length = std::min(0.35f * length, std::max(0.3f, 1.2f * kMinHeadWidthPixels * metres_per_pixel));
+  const float head_half_width = std::max(0.38f * head_length, 0.5f * kMinHeadWidthPixels * metres_per_pixel);
+  const float shaft_half_width = std::max(0.3f * head_half_width, 0.5f * kMinShaftWidthPixels * metres_per_pixel);
+
+  const Vec3f head_base = arrow.origin + axis * (length - std::min(head_length, length));
+  const Vec3f tip = arrow.origin + arrow.direction;
+  const Vec3f shaft_side = side * shaft_half_width;
+  const Vec3f head_side = side * head_half_width;
+  const Colour& c = arrow.colour;
+  add(triangles, arrow.origin - shaft_side, c);
+  add(triangles, head_base - shaft_side, c);
+  add(triangles, head_base + shaft_side, c);
+  add(triangles, arrow.origin - shaft_side, c);
+  add(triangles, head_base + shaft_side, c);
+  add(triangles, arrow.origin + shaft_side, c);
+  add(triangles, head_base - head_side, c);
+  add(triangles, tip, c);
+  add(triangles, head_base + head_side, c);
+}
+
+}  // namespace impulse::render

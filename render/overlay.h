@@ -1,0 +1,55 @@
+// The 2D layer drawn over a frame (with cairo, see overlay_painter.h), as plain data: title,
+// caption lines, labels beside arrows, the clock and playback speed, a legend and live plots.
+// Positions are pixels of the frame, x to the right and y down from its top-left corner.
+#pragma once
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "render/draw_list.h"
+
+namespace impulse::render {
+
+using Vec2f = Eigen::Vector2f;
+
+// Text beside a point of the frame (e.g. an arrow's tip): "J = 2.41 N·s".
+struct OverlayLabel {
+  Vec2f anchor;
+  std::string text;
+  Colour colour{0.1f, 0.1f, 0.1f};
+};
+
+// One line of the legend: a short arrow (or dot) in `colour`, then `text`. When
+// `scale_pixels` > 0 the arrow is that long, e.g. what 1 N·s is on screen.
+struct LegendEntry {
+  Colour colour;
+  std::string text;
+  float scale_pixels = 0.0f;
+  bool dot = false;  // a dot instead of an arrow (contact points)
+};
+
+// A small line plot that grows as the video plays: x is simulated time from 0 to `x_end`.
+struct Plot {
+  std::string title;   // e.g. "kinetic energy"
+  std::string unit;    // e.g. "J"
+  Colour colour;
+  float x_end = 1.0f;  // s: the right edge, so the curve grows towards it
+  std::vector<Vec2f> points;  // (time s, value), in time order
+};
+
+struct Overlay {
+  std::string title;                  // top left
+  std::vector<std::string> captions;  // lines shown now, bottom centre
+  std::vector<OverlayLabel> labels;
+  std::string clock;                  // top right, e.g. "t = 1.25 s"
+  std::string playback;               // under the clock, e.g. "slow motion ×0.25"; empty: none
+  std::vector<LegendEntry> legend;    // under the title
+  std::vector<Plot> plots;            // a column at the right
+
+  bool empty() const {
+    return title.empty() && captions.empty() && labels.empty() && clock.empty() && playback.empty() &&
+           legend.empty() && plots.empty();
+  }
+};
+
+}  // namespace impulse::render
