@@ -165,8 +165,9 @@ int edge_contact(const BoxFrame& a, const BoxFrame& b, int i, int j, const Vec3&
 }  // namespace
 
 // Two boxes: the separating axis test over the 15 axes (3 + 3 face normals, 9 edge cross
-// products). Any axis separating by more than the margin means no contact; otherwise the
-// face or edge axis of least penetration, with faces preferred, makes the manifold.
+// products). Any axis (or world axis) separating by more than the margin means no contact;
+// otherwise the axis of least penetration, faces preferred, makes the manifold: a reference face
+// with the other box's face clipped to it, or one point between two crossing edges.
 int collide_boxes(const Body& body_a, int ia, const Body& body_b, int ib, Real margin, std::vector<Contact>& out) {
   const BoxFrame a{body_a.position, body_a.orientation.toRotationMatrix(), body_a.shape.half_extents};
   const BoxFrame b{body_b.position, body_b.orientation.toRotationMatrix(), body_b.shape.half_extents};
