@@ -20,6 +20,14 @@ Real inverse_effective_mass(const BodyState& sa, const BodyState& sb, const Vec3
 
 Real safe_inverse(Real k) { return k > 0 ? 1 / k : 0; }
 
+// Passes over a manifold's points per solve: one pass favours the point solved first, and a box
+// on a box then tilts; a few passes bring the points to agreement whatever their order.
+constexpr int kManifoldIterations = 4;
+constexpr int kMaxManifoldPoints = 8;
+
+uint64_t pair_key(int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); }
+uint64_t point_key(const Contact& c) { return (pair_key(c.body_a, c.body_b) * 0x9E3779B97F4A7C15ull) ^ c.feature; }
+
 // The normal velocity at which the surfaces meet, predicted from a sub-step that starts
 // `separation` apart with normal velocity `vn` (already including this sub-step's gravity) under
 // relative acceleration `a` (v_touch^2 = v0^2 - 2 a s). Semi-implicit Euler's velocity leads by half a
@@ -32,16 +40,33 @@ Real touch_velocity(Real vn, Real separation, Real a, Real h) {
   return -std::sqrt(v_squared);
 }
 
+// Friction impulses j1, j2 clamped to the Coulomb disc of radius `limit`.
+void clamp_to_disc(Real& j1, Real& j2, Real limit) {
+  const Real length = std::hypot(j1, j2);
+  if (length <= limit) return;
+  j1 *= limit / length;
+  j2 *= limit / length;
+}
+
+void apply_twist(BodyState& sa, BodyState& sb, const Vec3& normal, Real impulse) {
+  sa.w += sa.inv_inertia * (impulse * normal);
+  sb.w -= sb.inv_inertia * (impulse * normal);
+}
+
 }  // namespace
 
 void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                             const std::vector<BodyState>& states, const ContactSolverSettings& settings,
                             const Vec3& gravity, Real h) {
   settings_ = settings;
-  const Softness contact_soft = make_softness(settings.contact_hertz, settings.contact_damping_ratio, h);
+  const Real hertz = std::min(settings.contact_hertz, 0.25 / h);
+  const Softness contact_soft = make_softness(hertz, settings.contact_damping_ratio, h);
   // Contacts against static bodies can be stiffer: only one body moves (Box2D's staticSoftness).
-  const Softness static_soft = make_softness(2 * settings.contact_hertz, settings.contact_damping_ratio, h);
+  const Softness static_soft = make_softness(2 * hertz, settings.contact_damping_ratio, h);
   constraints_.clear();
+  manifolds_.clear();
+  point_keys_.clear();
+  pair_keys_.clear();
   constraints_.reserve(contacts.size());
   for (const Contact& contact : contacts) {
     const Body& body_a = bodies[contact.body_a];
@@ -56,150 +81,271 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
     c.anchor_a = contact.point - body_a.position;
     c.anchor_b = contact.point - body_b.position;
     c.adjusted_separation = contact.separation - (c.anchor_a - c.anchor_b).dot(c.normal);
-    c.normal_mass = safe_inverse(inverse_effective_mass(sa, sb, c.anchor_a, c.anchor_b, c.normal));
+    c.ra_cross_n = c.anchor_a.cross(c.normal);
+    c.rb_cross_n = c.anchor_b.cross(c.normal);
+    c.angular_a = sa.inv_inertia * c.ra_cross_n;
+    c.angular_b = sb.inv_inertia * c.rb_cross_n;
+    c.normal_mass = safe_inverse(sa.inv_mass + sb.inv_mass + c.ra_cross_n.dot(c.angular_a) + c.rb_cross_n.dot(c.angular_b));
     c.tangent_mass1 = safe_inverse(inverse_effective_mass(sa, sb, c.anchor_a, c.anchor_b, c.tangent1));
     c.tangent_mass2 = safe_inverse(inverse_effective_mass(sa, sb, c.anchor_a, c.anchor_b, c.tangent2));
     c.friction = settings.friction ? mix_friction(body_a.material.friction, body_b.material.friction) : 0;
     c.restitution = mix_restitution(body_a.material.restitution, body_b.material.restitution);
     c.softness = (sa.inv_mass == 0 || sb.inv_mass == 0) ? static_soft : contact_soft;
     c.normal_acceleration = ((sa.inv_mass > 0 ? gravity : Vec3::Zero()) - (sb.inv_mass > 0 ? gravity : Vec3::Zero())).dot(c.normal);
+    point_keys_.push_back(point_key(contact));
+    if (auto warm = warm_normal_.find(point_keys_.back()); warm != warm_normal_.end()) c.normal_impulse = warm->second;
+
+    // Consecutive contacts of one pair form its manifold.
+    if (manifolds_.empty() || manifolds_.back().a != c.a || manifolds_.back().b != c.b) {
+      ManifoldConstraint m;
+      m.a = c.a;
+      m.b = c.b;
+      m.first = int(constraints_.size());
+      manifolds_.push_back(m);
+    }
+    ++manifolds_.back().count;
     constraints_.push_back(c);
+  }
+
+  for (ManifoldConstraint& m : manifolds_) {
+    const BodyState& sa = states[m.a];
+    const BodyState& sb = states[m.b];
+    const ContactConstraint& first = constraints_[m.first];
+    Vec3 centre = Vec3::Zero();
+    for (int i = 0; i < m.count; ++i) centre += constraints_[m.first + i].anchor_a;
+    centre /= m.count;  // relative to A
+    m.centre_a = centre;
+    m.centre_b = centre + (first.anchor_b - first.anchor_a);
+    m.tangent_mass1 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent1));
+    m.tangent_mass2 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent2));
+    m.twist_mass = safe_inverse(first.normal.dot((sa.inv_inertia + sb.inv_inertia) * first.normal));
+    m.twist_radius = 0;
+    for (int i = 0; i < m.count; ++i) m.twist_radius += (constraints_[m.first + i].anchor_a - centre).norm() / m.count;
+    pair_keys_.push_back(pair_key(m.a, m.b));
+    if (auto warm = warm_friction_.find(pair_keys_.back()); warm != warm_friction_.end()) {
+      m.tangent_impulse1 = warm->second.tangent1;
+      m.tangent_impulse2 = warm->second.tangent2;
+      m.twist_impulse = warm->second.twist;
+    }
   }
 }
 
 void ContactSolver::warm_start(std::vector<BodyState>& states) const {
-  for (const ContactConstraint& c : constraints_) {
-    const Vec3 impulse = c.normal_impulse * c.normal + c.tangent_impulse1 * c.tangent1 + c.tangent_impulse2 * c.tangent2;
-    apply_impulse(states[c.a], states[c.b], c.anchor_a, c.anchor_b, impulse);
+  for (const ManifoldConstraint& m : manifolds_) {
+    BodyState& sa = states[m.a];
+    BodyState& sb = states[m.b];
+    for (int i = 0; i < m.count; ++i) {
+      const ContactConstraint& c = constraints_[m.first + i];
+      apply_impulse(sa, sb, c.anchor_a, c.anchor_b, c.normal_impulse * c.normal);
+    }
+    const ContactConstraint& first = constraints_[m.first];
+    apply_impulse(sa, sb, m.centre_a, m.centre_b, m.tangent_impulse1 * first.tangent1 + m.tangent_impulse2 * first.tangent2);
+    apply_twist(sa, sb, first.normal, m.twist_impulse);
   }
 }
 
 void ContactSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_bias) {
-  for (ContactConstraint& c : constraints_) {
-    BodyState& sa = states[c.a];
-    BodyState& sb = states[c.b];
+  for (ManifoldConstraint& m : manifolds_) {
+    BodyState& sa = states[m.a];
+    BodyState& sb = states[m.b];
+    if (use_bias && bounce(m, sa, sb, 1 / inv_h)) continue;
+    solve_normals(m, states, inv_h, use_bias);
+    if (constraints_[m.first].friction == 0) continue;
+    Real normal_sum = 0;
+    for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].normal_impulse;
+    solve_friction(m, sa, sb, normal_sum);
+  }
+}
 
-    // Separation now, from how far each body has moved and turned since the step began.
+void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
+  BodyState& sa = states[m.a];
+  BodyState& sb = states[m.b];
+  // Each point's target, from its separation now (positions do not change during the passes).
+  struct Row { ContactConstraint* c; Real bias, mass_scale, impulse_scale; };
+  Row rows[kMaxManifoldPoints];
+  int row_count = 0;
+  for (int i = 0; i < m.count && row_count < kMaxManifoldPoints; ++i) {
+    ContactConstraint& c = constraints_[m.first + i];
     const Real separation = current_separation(c, sa, sb);
-
-    Real bias = 0, mass_scale = 1, impulse_scale = 0;
+    Row row{&c, 0, 1, 0};
     if (separation > 0) {
       // Speculative: may close the gap this sub-step, no further. The relax pass leaves it be:
       // the next solve clamps it anyway, and slowing a body before it touches would lose the
       // speed it hits with.
       if (!use_bias) continue;
-      bias = separation * inv_h;
+      row.bias = separation * inv_h;
     } else if (use_bias) {
-      bias = std::max(c.softness.bias_rate * separation, -settings_.max_push_velocity);
-      mass_scale = c.softness.mass_scale;
-      impulse_scale = c.softness.impulse_scale;
+      row.bias = std::max(c.softness.bias_rate * separation, -settings_.max_push_velocity);
+      row.mass_scale = c.softness.mass_scale;
+      row.impulse_scale = c.softness.impulse_scale;
     }
+    rows[row_count++] = row;
+  }
 
-    // Normal impulse (eq. 13 with 1+e folded into the restitution pass; here the target is
-    // "stop approaching"), accumulated and clamped to push only.
-    const Vec3 dv = relative_velocity(sa, sb, c.anchor_a, c.anchor_b);
-    const Real vn = dv.dot(c.normal);
-    if (use_bias && bounce(c, sa, sb, vn, separation, 1 / inv_h)) continue;
-    Real impulse = -c.normal_mass * mass_scale * (vn + bias) - impulse_scale * c.normal_impulse;
-    const Real new_impulse = std::max(c.normal_impulse + impulse, Real(0));
-    impulse = new_impulse - c.normal_impulse;
-    c.normal_impulse = new_impulse;
-    c.max_normal_impulse = std::max(c.max_normal_impulse, impulse);
-    apply_impulse(sa, sb, c.anchor_a, c.anchor_b, impulse * c.normal);
-
-    // Coulomb friction on two tangents, clamped to the friction disc of radius mu * jn.
-    if (c.friction > 0) {
-      const Vec3 dvt = relative_velocity(sa, sb, c.anchor_a, c.anchor_b);
-      const Real old1 = c.tangent_impulse1, old2 = c.tangent_impulse2;
-      Real new1 = old1 - c.tangent_mass1 * dvt.dot(c.tangent1);
-      Real new2 = old2 - c.tangent_mass2 * dvt.dot(c.tangent2);
-      const Real limit = c.friction * c.normal_impulse;
-      const Real length = std::hypot(new1, new2);
-      if (length > limit) {
-        const Real scale = limit / length;
-        new1 *= scale;
-        new2 *= scale;
-      }
-      c.tangent_impulse1 = new1;
-      c.tangent_impulse2 = new2;
-      apply_impulse(sa, sb, c.anchor_a, c.anchor_b, (new1 - old1) * c.tangent1 + (new2 - old2) * c.tangent2);
+  // Accumulated and clamped to push only; the target is "stop approaching" (restitution is
+  // bounce()'s). Several passes when the manifold has several points.
+  const int passes = row_count == 1 ? 1 : kManifoldIterations;
+  for (int pass = 0; pass < passes; ++pass) {
+    for (int k = 0; k < row_count; ++k) {
+      const Row& row = rows[k];
+      ContactConstraint& c = *row.c;
+      const Real vn = (sa.v - sb.v).dot(c.normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n);
+      const Real impulse = -c.normal_mass * row.mass_scale * (vn + row.bias) - row.impulse_scale * c.normal_impulse;
+      const Real new_impulse = std::max(c.normal_impulse + impulse, Real(0));
+      const Real applied = new_impulse - c.normal_impulse;
+      c.normal_impulse = new_impulse;
+      sa.v += (sa.inv_mass * applied) * c.normal;
+      sa.w += applied * c.angular_a;
+      sb.v -= (sb.inv_mass * applied) * c.normal;
+      sb.w -= applied * c.angular_b;
     }
   }
 }
 
-// A collision (restitution) is answered in the sub-step in which the surfaces meet, one contact at
-// a time: so a hit passes along a row of touching bodies as in Newton's cradle, instead of being
+// Coulomb friction at the points' centroid, within the disc of radius mu times their total
+// normal impulse, and a twist about the normal within mu times that times the points' spread.
+void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum) const {
+  const ContactConstraint& first = constraints_[m.first];
+  const Real limit = first.friction * normal_sum;
+  const Vec3 dv = relative_velocity(sa, sb, m.centre_a, m.centre_b);
+  const Real old1 = m.tangent_impulse1, old2 = m.tangent_impulse2;
+  m.tangent_impulse1 -= m.tangent_mass1 * dv.dot(first.tangent1);
+  m.tangent_impulse2 -= m.tangent_mass2 * dv.dot(first.tangent2);
+  clamp_to_disc(m.tangent_impulse1, m.tangent_impulse2, limit);
+  apply_impulse(sa, sb, m.centre_a, m.centre_b, (m.tangent_impulse1 - old1) * first.tangent1 + (m.tangent_impulse2 - old2) * first.tangent2);
+
+  if (m.twist_radius == 0) return;
+  const Real old_twist = m.twist_impulse;
+  const Real twist_limit = limit * m.twist_radius;
+  m.twist_impulse = std::clamp(old_twist - m.twist_mass * (sa.w - sb.w).dot(first.normal), -twist_limit, twist_limit);
+  apply_twist(sa, sb, first.normal, m.twist_impulse - old_twist);
+}
+
+// A collision (restitution) is answered in the sub-step in which the surfaces meet, one pair at a
+// time: so a hit passes along a row of touching bodies as in Newton's cradle, instead of being
 // shared out inelastically first. Slower hits (resting contact) are left to the solver.
-bool ContactSolver::bounce(ContactConstraint& c, BodyState& sa, BodyState& sb, Real vn, Real separation, Real h) {
-  if (c.bounced || c.restitution == 0 || vn > -settings_.restitution_threshold) return false;
-  if (separation + vn * h > 0) return false;  // will not meet within this sub-step
+bool ContactSolver::bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real h) {
+  const ContactConstraint& first = constraints_[m.first];
+  if (m.bounced || first.restitution == 0) return false;
 
-  // The hit acts at one world point for both bodies, midway between where their anchors are now,
-  // so that it conserves angular momentum exactly; its effective mass follows.
-  // (Offsets from the step-start contact point; r_a - r_b = x_b - x_a, and r = anchor at rest.)
-  const Vec3 mean_motion = ((sa.dp + sa.dq * c.anchor_a) + (sb.dp + sb.dq * c.anchor_b)) / 2;
-  const Vec3 half_span = (c.anchor_a - c.anchor_b) / 2;
-  const Vec3 ra = mean_motion - sa.dp + half_span, rb = mean_motion - sb.dp - half_span;
-  const Real normal_mass = safe_inverse(inverse_effective_mass(sa, sb, ra, rb, c.normal));
-  vn = relative_velocity(sa, sb, ra, rb).dot(c.normal);
+  // The points that meet within this sub-step, fast enough to bounce.
+  struct Hit { int index; Vec3 ra, rb; Real normal_mass, target, u, tau, gap, impulse; };
+  Hit hits[8];
+  int hit_count = 0;
+  for (int i = 0; i < m.count && hit_count < 8; ++i) {
+    const ContactConstraint& c = constraints_[m.first + i];
+    const Real separation = current_separation(c, sa, sb);
+    const Real vn = relative_velocity(sa, sb, c.anchor_a, c.anchor_b).dot(c.normal);
+    if (vn > -settings_.restitution_threshold || separation + vn * h > 0) continue;
 
-  // Exactly, under the constant relative acceleration a: the surfaces, `gap` apart at the start
-  // of the sub-step, meet after tau at v_touch and part at u = -e v_touch (eq. 5). Semi-implicit
-  // Euler's velocity lags its position by half a sub-step (its state (x, v) is the exact state
-  // (x, v + a h/2)), so the velocity to store for the end of the sub-step is u + a (h/2 - tau).
-  const Real a = c.normal_acceleration;
-  const Real gap = std::max(separation, Real(0));
-  const Real v_touch = touch_velocity(vn, gap, a, h);
-  const Real v_start = vn - a * h / 2;
-  const Real tau = gap > 0 ? 2 * gap / -(v_start + v_touch) : 0;
-  const Real u = -c.restitution * v_touch;
-  const Real target = u + a * (h / 2 - tau);
-  const Real impulse = std::max(normal_mass * (target - vn), Real(0));  // eq. 13 with (1 + e)
-  apply_impulse(sa, sb, ra, rb, impulse * c.normal);
-  c.total_normal_impulse += impulse;
-  c.max_normal_impulse = std::max(c.max_normal_impulse, impulse);
-  c.bounced = true;
+    Hit& hit = hits[hit_count++];
+    hit.index = m.first + i;
+    // The hit acts at one world point for both bodies, midway between where their anchors are
+    // now, so that it conserves angular momentum exactly (r_a - r_b = x_b - x_a).
+    const Vec3 mean_motion = ((sa.dp + sa.dq * c.anchor_a) + (sb.dp + sb.dq * c.anchor_b)) / 2;
+    const Vec3 half_span = (c.anchor_a - c.anchor_b) / 2;
+    hit.ra = mean_motion - sa.dp + half_span;
+    hit.rb = mean_motion - sb.dp - half_span;
+    hit.normal_mass = safe_inverse(inverse_effective_mass(sa, sb, hit.ra, hit.rb, c.normal));
+    // Exactly, under the constant relative acceleration a: the surfaces, `gap` apart at the start
+    // of the sub-step, meet after tau at v_touch and part at u = -e v_touch (eq. 5). Semi-implicit
+    // Euler's velocity lags its position by half a sub-step (its state (x, v) is the exact state
+    // (x, v + a h/2)), so the velocity to aim for at the end of the sub-step is u + a (h/2 - tau).
+    const Real a = c.normal_acceleration;
+    const Real vn_mid = relative_velocity(sa, sb, hit.ra, hit.rb).dot(c.normal);
+    hit.gap = std::max(separation, Real(0));
+    const Real v_touch = touch_velocity(vn_mid, hit.gap, a, h);
+    const Real v_start = vn_mid - a * h / 2;
+    hit.tau = hit.gap > 0 ? 2 * hit.gap / -(v_start + v_touch) : 0;
+    hit.u = -c.restitution * v_touch;
+    hit.target = hit.u + a * (h / 2 - hit.tau);
+    hit.impulse = 0;
+  }
+  if (hit_count == 0) return false;
 
-  // Friction during the hit, within the Coulomb disc of this impulse.
-  if (c.friction > 0) {
-    const Vec3 dvt = relative_velocity(sa, sb, ra, rb);
-    Real j1 = -c.tangent_mass1 * dvt.dot(c.tangent1), j2 = -c.tangent_mass2 * dvt.dot(c.tangent2);
-    const Real length = std::hypot(j1, j2), limit = c.friction * impulse;
-    if (length > limit) {
-      j1 *= limit / length;
-      j2 *= limit / length;
+  // The points of one face land together: iterate them to agreement (eq. 13 with 1 + e, each
+  // accumulated and clamped to push only).
+  for (int iteration = 0; iteration < (hit_count == 1 ? 1 : 8); ++iteration) {
+    for (int k = 0; k < hit_count; ++k) {
+      Hit& hit = hits[k];
+      const Vec3& normal = constraints_[hit.index].normal;
+      const Real vn = relative_velocity(sa, sb, hit.ra, hit.rb).dot(normal);
+      const Real new_impulse = std::max(hit.impulse + hit.normal_mass * (hit.target - vn), Real(0));
+      apply_impulse(sa, sb, hit.ra, hit.rb, (new_impulse - hit.impulse) * normal);
+      hit.impulse = new_impulse;
     }
-    apply_impulse(sa, sb, ra, rb, j1 * c.tangent1 + j2 * c.tangent2);
-    c.total_tangent_impulse1 += j1;
-    c.total_tangent_impulse2 += j2;
+  }
+
+  // Friction during the hit, at the hit points' centroid, within mu times the hit's impulse.
+  Real impulse_sum = 0;
+  Vec3 ra = Vec3::Zero(), rb = Vec3::Zero();
+  for (int k = 0; k < hit_count; ++k) {
+    constraints_[hits[k].index].total_normal_impulse += hits[k].impulse;
+    impulse_sum += hits[k].impulse;
+    ra += hits[k].ra / hit_count;
+    rb += hits[k].rb / hit_count;
+  }
+  if (first.friction > 0 && impulse_sum > 0) {
+    const Vec3 dv = relative_velocity(sa, sb, ra, rb);
+    Real j1 = -safe_inverse(inverse_effective_mass(sa, sb, ra, rb, first.tangent1)) * dv.dot(first.tangent1);
+    Real j2 = -safe_inverse(inverse_effective_mass(sa, sb, ra, rb, first.tangent2)) * dv.dot(first.tangent2);
+    clamp_to_disc(j1, j2, first.friction * impulse_sum);
+    apply_impulse(sa, sb, ra, rb, j1 * first.tangent1 + j2 * first.tangent2);
+    m.total_tangent_impulse1 += j1;
+    m.total_tangent_impulse2 += j2;
   }
 
   // Integrating the whole sub-step at `target` from `gap` would not leave the surfaces where the
-  // exact motion does, u (h - tau) + a (h - tau)^2 / 2 apart: take the difference back afterwards.
-  const Real after = h - tau;
-  c.bounce_shift = (u * after + a * after * after / 2) - (gap + target * h);
+  // exact motion does, u (h - tau) + a (h - tau)^2 / 2 apart: take the difference back afterwards,
+  // for the point that met first.
+  const Hit* earliest = std::min_element(hits, hits + hit_count, [](const Hit& x, const Hit& y) { return x.tau < y.tau; });
+  const Real a = constraints_[earliest->index].normal_acceleration, after = h - earliest->tau;
+  m.bounce_shift = (earliest->u * after + a * after * after / 2) - (earliest->gap + earliest->target * h);
+  m.bounced = true;
   return true;
 }
 
+// The shift is taken back as a time shift of the pair: each body moves along its own velocity for
+// the same dt. That changes neither momentum nor angular momentum (sum of v dt x m v = 0).
 void ContactSolver::apply_bounce_shifts(std::vector<BodyState>& states) {
-  for (ContactConstraint& c : constraints_) {
-    if (c.bounce_shift == 0) continue;
-    BodyState& sa = states[c.a];
-    BodyState& sb = states[c.b];
-    const Real total = sa.inv_mass + sb.inv_mass;
-    if (total > 0) {
-      sa.dp += c.normal * (c.bounce_shift * sa.inv_mass / total);
-      sb.dp -= c.normal * (c.bounce_shift * sb.inv_mass / total);
+  for (ManifoldConstraint& m : manifolds_) {
+    if (m.bounce_shift == 0) continue;
+    BodyState& sa = states[m.a];
+    BodyState& sb = states[m.b];
+    const Real parting = (sa.v - sb.v).dot(constraints_[m.first].normal);
+    if (parting > 1e-6) {
+      const Real dt = m.bounce_shift / parting;
+      if (sa.inv_mass > 0) sa.dp += sa.v * dt;
+      if (sb.inv_mass > 0) sb.dp += sb.v * dt;
     }
-    c.bounce_shift = 0;
+    m.bounce_shift = 0;
   }
 }
 
 void ContactSolver::end_substep() {
-  for (ContactConstraint& c : constraints_) {
-    c.total_normal_impulse += c.normal_impulse;
-    c.total_tangent_impulse1 += c.tangent_impulse1;
-    c.total_tangent_impulse2 += c.tangent_impulse2;
+  for (ContactConstraint& c : constraints_) c.total_normal_impulse += c.normal_impulse;
+  for (ManifoldConstraint& m : manifolds_) {
+    m.total_tangent_impulse1 += m.tangent_impulse1;
+    m.total_tangent_impulse2 += m.tangent_impulse2;
+  }
+}
+
+void ContactSolver::store_impulses() {
+  warm_normal_.clear();
+  warm_friction_.clear();
+  for (size_t i = 0; i < constraints_.size(); ++i) warm_normal_[point_keys_[i]] = constraints_[i].normal_impulse;
+  for (size_t k = 0; k < manifolds_.size(); ++k) {
+    ManifoldConstraint& m = manifolds_[k];
+    warm_friction_[pair_keys_[k]] = {m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse};
+    // For the records: each point's share of the friction, by its share of the normal impulse.
+    Real normal_sum = 0;
+    for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].total_normal_impulse;
+    for (int i = 0; i < m.count; ++i) {
+      ContactConstraint& c = constraints_[m.first + i];
+      const Real share = normal_sum > 0 ? c.total_normal_impulse / normal_sum : Real(1) / m.count;
+      c.total_tangent_impulse1 = share * m.total_tangent_impulse1;
+      c.total_tangent_impulse2 = share * m.total_tangent_impulse2;
+    }
   }
 }
 

@@ -1,16 +1,21 @@
-// Sequential impulses on contacts: accumulated, clamped normal impulses (eq. 13 as corrected),
-// Coulomb friction on two tangents, soft position correction, and restitution as each contact is met.
+// Sequential impulses on contacts (the default method): per point, accumulated normal impulses
+// clamped to push only (eq. 13 as corrected) with a soft position correction; per manifold (all
+// the points between one pair of bodies), Coulomb friction on two tangents and a twist at the
+// points' centroid, and restitution answered in the sub-step in which the surfaces meet.
 #pragma once
 #include "physics/body.h"
 #include "physics/contact.h"
 #include "physics/solver_state.h"
 
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 namespace impulse::physics {
 
 struct ContactSolverSettings {
-  Real contact_hertz = 30;             // stiffness of the position correction
+  Real contact_hertz = 120;            // stiffness of the position correction, at most 1/4 of the
+                                       // sub-step rate (Box2D's rule; stiffer is unstable)
   Real contact_damping_ratio = 10;
   Real max_push_velocity = 3;          // m/s, fastest the correction moves bodies apart
   Real restitution_threshold = 0.5;    // m/s, slower hits do not bounce (no resting jiggle)
@@ -22,22 +27,22 @@ struct ContactSolverSettings {
 Real mix_restitution(Real a, Real b);
 Real mix_friction(Real a, Real b);
 
+// One contact point.
 struct ContactConstraint {
   int a = -1, b = -1;
   Vec3 normal, tangent1, tangent2;
   Vec3 anchor_a, anchor_b;             // contact point relative to each centre, at step start
   Real adjusted_separation = 0;        // separation - dot(anchor_a - anchor_b, normal)
   Real normal_mass = 0, tangent_mass1 = 0, tangent_mass2 = 0;
+  // The normal row's angular parts, fixed for the step: r x n, and I^-1 (r x n) for each body.
+  Vec3 ra_cross_n = Vec3::Zero(), rb_cross_n = Vec3::Zero();
+  Vec3 angular_a = Vec3::Zero(), angular_b = Vec3::Zero();
   Real friction = 0, restitution = 0;
   Softness softness;
-  // Impulses of the current sub-step (warm started from the previous one).
-  Real normal_impulse = 0, tangent_impulse1 = 0, tangent_impulse2 = 0;
+  Real normal_impulse = 0;             // this sub-step's, warm started from the last one
   // Sums over the whole step, for the records.
   Real total_normal_impulse = 0, total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
-  Real max_normal_impulse = 0;
   Real normal_acceleration = 0;        // of A relative to B along the normal, from gravity
-  bool bounced = false;                // restitution applied this step
-  Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
 };
 
 // Separation now, from how far each body has moved and turned since the step began.
@@ -46,25 +51,45 @@ inline Real current_separation(const ContactConstraint& c, const BodyState& sa, 
   return moved.dot(c.normal) + c.adjusted_separation;
 }
 
+// The points between one pair of bodies, and their shared friction.
+struct ManifoldConstraint {
+  int a = -1, b = -1;
+  int first = 0, count = 0;            // its points in the constraint list
+  Vec3 centre_a = Vec3::Zero(), centre_b = Vec3::Zero();  // the points' centroid relative to each centre
+  Real tangent_mass1 = 0, tangent_mass2 = 0, twist_mass = 0;
+  Real twist_radius = 0;               // mean distance of the points from the centroid
+  Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;  // this sub-step's
+  Real total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
+  bool bounced = false;                // restitution applied this step
+  Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
+};
+
 class ContactSolver {
  public:
-  // Builds one constraint per contact. `warm` holds each contact's impulses from the last step
-  // (three per contact, or empty for a new contact).
+  // Builds the constraints of this step's contacts, warm started from the last step's impulses.
   void prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                const std::vector<BodyState>& states, const ContactSolverSettings& settings,
                const Vec3& gravity, Real h);
   void warm_start(std::vector<BodyState>& states) const;
   void solve(std::vector<BodyState>& states, Real inv_h, bool use_bias);
   void apply_bounce_shifts(std::vector<BodyState>& states);  // after integrating positions
-  void end_substep();  // adds this sub-step's impulses to the step totals
+  void end_substep();     // adds this sub-step's impulses to the step totals
+  void store_impulses();  // keeps them for warm starting the next step
 
   std::vector<ContactConstraint>& constraints() { return constraints_; }
   const std::vector<ContactConstraint>& constraints() const { return constraints_; }
 
  private:
-  std::vector<ContactConstraint> constraints_;
-  bool bounce(ContactConstraint& c, BodyState& sa, BodyState& sb, Real vn, Real separation, Real h);
+  void solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias);
+  void solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum) const;
+  bool bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real h);
 
+  std::vector<ContactConstraint> constraints_;
+  std::vector<ManifoldConstraint> manifolds_;
+  std::vector<uint64_t> point_keys_, pair_keys_;
+  struct WarmFriction { Real tangent1, tangent2, twist; };
+  std::unordered_map<uint64_t, Real> warm_normal_;           // by pair and feature
+  std::unordered_map<uint64_t, WarmFriction> warm_friction_;  // by pair
   ContactSolverSettings settings_;
 };
 

@@ -8,14 +8,6 @@
 
 namespace impulse::physics {
 
-namespace {
-
-uint64_t contact_key(const Contact& c) {
-  return (uint64_t(uint32_t(c.body_a)) << 40) ^ (uint64_t(uint32_t(c.body_b)) << 16) ^ c.feature;
-}
-
-}  // namespace
-
 World::World(WorldSettings settings) : settings_(settings) {
   if (!(settings_.time_step > 0)) throw std::invalid_argument("time_step must be > 0");
   if (settings_.substeps < 1) throw std::invalid_argument("substeps must be >= 1");
@@ -61,14 +53,6 @@ const StepRecord& World::step() {
 // Box2D v3's soft step: per sub-step, integrate velocities, warm start, solve with the soft
 // position bias (bouncing the contacts that meet), integrate positions, then relax without bias.
 void World::solve_impulse(Real h) {
-  auto& constraints = contact_solver_.constraints();
-  for (size_t i = 0; i < contacts_.size(); ++i) {
-    auto found = warm_impulses_.find(contact_key(contacts_[i]));
-    if (found == warm_impulses_.end()) continue;
-    constraints[i].normal_impulse = found->second.normal;
-    constraints[i].tangent_impulse1 = found->second.tangent1;
-    constraints[i].tangent_impulse2 = found->second.tangent2;
-  }
   for (int i = 0; i < settings_.substeps; ++i) {
     integrate_velocities(h);
     joint_solver_.warm_start(states_);
@@ -81,7 +65,7 @@ void World::solve_impulse(Real h) {
     contact_solver_.solve(states_, 1 / h, false);
     contact_solver_.end_substep();
   }
-  remember_impulses();
+  contact_solver_.store_impulses();
 }
 
 // Listing 1: respond to the contacts found at the start of the step, then move (one full step).
@@ -172,15 +156,6 @@ void World::store_states() {
     body.angular_velocity = s.w;
     body.position += s.dp;
     body.orientation = (s.dq * body.orientation).normalized();
-  }
-}
-
-void World::remember_impulses() {
-  warm_impulses_.clear();
-  const auto& constraints = contact_solver_.constraints();
-  for (size_t i = 0; i < contacts_.size(); ++i) {
-    const ContactConstraint& c = constraints[i];
-    warm_impulses_[contact_key(contacts_[i])] = {c.normal_impulse, c.tangent_impulse1, c.tangent_impulse2};
   }
 }
 

@@ -38,3 +38,38 @@ inline Vec3 linear_momentum(const World& world) {
 }
 
 }  // namespace impulse::physics::test
+
+namespace impulse::physics::test {
+
+inline int add_box(World& world, const Vec3& position, const Vec3& half_extents, Real mass, const Quat& orientation = Quat::Identity(),
+                   const Vec3& velocity = Vec3::Zero(), Material material = {}) {
+  BodyDef def;
+  def.name = "box";
+  def.shape = Shape::box(half_extents);
+  def.mass = mass;
+  def.position = position;
+  def.orientation = orientation;
+  def.velocity = velocity;
+  def.material = material;
+  return world.add_body(def);
+}
+
+// The benchmark's ground (../shared/bench/SCENES.md): a static box 200 x 1 x 200 m, top at y = 0.
+inline int add_ground_box(World& world, Material material = {0, 0.6}) {
+  BodyDef def;
+  def.name = "ground";
+  def.shape = Shape::box(Vec3(100, 0.5, 100));
+  def.is_static = true;
+  def.position = Vec3(0, -0.5, 0);
+  def.material = material;
+  return world.add_body(def);
+}
+
+inline Vec3 angular_momentum_about_origin(const World& world) {
+  Vec3 l = Vec3::Zero();
+  for (const Body& b : world.bodies())
+    if (!b.is_static()) l += b.position.cross(b.mass * b.velocity) + b.inertia_world() * b.angular_velocity;
+  return l;
+}
+
+}  // namespace impulse::physics::test
