@@ -1,18 +1,39 @@
-// [world] and [[body]]: what the physics simulates.
+// [world], [[body]] and [[joint]]: what the physics simulates.
 #include "demos/scene_sections.h"
 
+#include <cmath>
 #include <iterator>
+#include <numbers>
 #include <stdexcept>
 
 namespace impulse::demos {
 
 namespace {
 
+using physics::Real;
 using physics::Vec3;
 
 // Colour-blind-safe palette (Okabe and Ito) for bodies without a colour of their own.
 const render::Colour kPalette[] = {{0.90f, 0.62f, 0.00f}, {0.34f, 0.71f, 0.91f}, {0.00f, 0.62f, 0.45f},
                                    {0.80f, 0.47f, 0.65f}, {0.00f, 0.45f, 0.70f}, {0.94f, 0.89f, 0.26f}};
+
+// Degrees about x, then y, then z (each about the world axis).
+physics::Quat rotation_from_degrees(const Vec3& degrees) {
+  const Vec3 r = degrees * (std::numbers::pi / 180);
+  using Turn = Eigen::AngleAxis<Real>;
+  return physics::Quat(Turn(r.z(), Vec3::UnitZ()) * Turn(r.y(), Vec3::UnitY()) * Turn(r.x(), Vec3::UnitX()));
+}
+
+// Appends a body after the engine's own checks, reported at the table's line.
+void add_body(TableReader& r, const physics::BodyDef& def, render::Colour colour, Scene& scene) {
+  try {
+    physics::make_body(def);
+  } catch (const std::invalid_argument& error) {
+    r.fail(nullptr, "", error.what());
+  }
+  scene.bodies.push_back(def);
+  scene.colours.push_back(colour);
+}
 
 void read_body(const toml::table& table, const std::string& path, int index, Scene& scene) {
   physics::BodyDef def;
@@ -20,9 +41,13 @@ void read_body(const toml::table& table, const std::string& path, int index, Sce
   if (auto name = table.get_as<std::string>("name")) def.name = name->get();
   TableReader r(table, path, "[[body]] '" + def.name + "'");
   r.get("name");
-  const std::string shape = r.choice("shape", "", {"sphere", "plane"});
+  const std::string shape = r.choice("shape", "", {"sphere", "box", "plane"});
   if (shape == "sphere") {
     def.shape = physics::Shape::sphere(r.number("radius", 0.5, 0, INFINITY, true));
+  } else if (shape == "box") {
+    const Vec3 size = r.vec3("size", Vec3(1, 1, 1));
+    if (!(size.minCoeff() > 0)) r.fail(r.get("size"), "size", "every edge must be > 0 (metres: [x, y, z])");
+    def.shape = physics::Shape::box(size / 2);
   } else if (shape == "plane") {
     const Vec3 normal = r.vec3("normal", Vec3::UnitY());
     if (normal.norm() < 1e-9) r.fail(r.get("normal"), "normal", "must not be the zero vector");
@@ -30,22 +55,26 @@ void read_body(const toml::table& table, const std::string& path, int index, Sce
     def.is_static = true;
   }
   def.is_static = r.boolean("static", def.is_static);
+  if (shape == "plane" && !def.is_static) r.fail(r.get("static"), "static", "a plane is always static");
   def.mass = r.number("mass", 0, 0, INFINITY, true);  // 0: from density
   def.density = r.number("density", def.density, 0, INFINITY, true);
   def.material.restitution = r.number("restitution", def.material.restitution, 0, 1);
   def.material.friction = r.number("friction", def.material.friction, 0);
   def.position = r.vec3("position", def.position);
+  def.orientation = rotation_from_degrees(r.vec3("rotation", Vec3::Zero()));
   def.velocity = r.vec3("velocity", def.velocity);
   def.angular_velocity = r.vec3("angular_velocity", def.angular_velocity);
   const render::Colour colour = r.colour("colour", kPalette[index % std::size(kPalette)]);
   r.finish();
-  try {
-    physics::make_body(def);  // the engine's own checks, reported at this body's line
-  } catch (const std::invalid_argument& error) {
-    r.fail(nullptr, "", error.what());
-  }
-  scene.bodies.push_back(def);
-  scene.colours.push_back(colour);
+  add_body(r, def, colour, scene);
+}
+
+int body_index(TableReader& r, const Scene& scene, std::string_view key) {
+  const std::string name = r.string(key, "world");
+  if (name == "world") return physics::kWorld;
+  for (size_t i = 0; i < scene.bodies.size(); ++i)
+    if (scene.bodies[i].name == name) return int(i);
+  r.fail(r.get(key), key, "no body is named '" + name + "' (give a [[body]] that name, or say \"world\")");
 }
 
 }  // namespace
@@ -58,8 +87,13 @@ void read_world(TableReader& top, Scene& scene) {
   w.gravity = r.vec3("gravity", w.gravity);
   w.time_step = 1 / r.number("step_rate", 1 / w.time_step, 1, 100000);
   w.substeps = r.integer("substeps", w.substeps, 1, 64);
+  w.method = *physics::method_from_name(r.choice("method", "impulse", {"impulse", "workshop", "projection", "penalty"}));
   w.contact.friction = r.boolean("friction", w.contact.friction);
   w.contact.restitution_threshold = r.number("restitution_threshold", w.contact.restitution_threshold, 0);
+  w.contact.contact_hertz = r.number("contact_hertz", w.contact.contact_hertz, 0, 10000, true);
+  w.sleep.enabled = r.boolean("sleeping", w.sleep.enabled);
+  w.penalty.hertz = r.number("penalty_hertz", w.penalty.hertz, 0, 10000, true);
+  w.penalty.damping_ratio = r.number("penalty_damping_ratio", w.penalty.damping_ratio, 0);
   r.finish();
 }
 
@@ -69,6 +103,39 @@ void read_bodies(TableReader& top, Scene& scene) {
   const toml::array* bodies = node->as_array();
   if (!bodies || !bodies->is_array_of_tables()) top.fail(node, "body", "must be a list of [[body]] tables");
   for (size_t i = 0; i < bodies->size(); ++i) read_body(*bodies->get(i)->as_table(), scene.path, int(i), scene);
+}
+
+void read_joints(TableReader& top, Scene& scene) {
+  const toml::node* node = top.get("joint");
+  if (!node) return;
+  const toml::array* joints = node->as_array();
+  if (!joints || !joints->is_array_of_tables()) top.fail(node, "joint", "must be a list of [[joint]] tables");
+  for (size_t i = 0; i < joints->size(); ++i) {
+    const toml::table& table = *joints->get(i)->as_table();
+    physics::JointDef def;
+    def.name = "joint " + std::to_string(i + 1);
+    if (auto name = table.get_as<std::string>("name")) def.name = name->get();
+    TableReader r(table, scene.path, "[[joint]] '" + def.name + "'");
+    r.get("name");
+    const std::string type = r.choice("type", "", {"ball", "hinge", "rod", "rope"});
+    def.body_a = body_index(r, scene, "a");
+    def.body_b = body_index(r, scene, "b");
+    if (def.body_a == def.body_b) r.fail(r.get("b"), "b", "a joint joins two different bodies");
+    if (type == "ball" || type == "hinge") {
+      def.type = type == "ball" ? physics::JointType::ball : physics::JointType::hinge;
+      def.anchor = r.vec3("anchor", Vec3::Zero());
+      if (type == "hinge") def.axis = r.vec3("axis", Vec3::UnitZ());
+    } else {
+      def.type = physics::JointType::distance;
+      def.rope = type == "rope";
+      auto centre = [&](int body) { return body == physics::kWorld ? Vec3::Zero() : scene.bodies[body].position; };
+      def.anchor_a = r.vec3("anchor_a", centre(def.body_a));
+      def.anchor_b = r.vec3("anchor_b", centre(def.body_b));
+      def.length = r.number("length", 0, 0);  // 0: the distance between the anchors
+    }
+    r.finish();
+    scene.joints.push_back(def);
+  }
 }
 
 }  // namespace impulse::demos

@@ -31,6 +31,8 @@ Scene load_scene(const std::string& path) {
   read_world(top, scene);
   read_view(top, scene);
   read_bodies(top, scene);
+  read_patterns(top, scene);
+  read_joints(top, scene);
   top.finish();
   if (scene.bodies.empty()) throw SceneError(path + ":1: scene: no bodies; add at least one [[body]] table");
   return scene;

@@ -29,6 +29,7 @@ struct Scene {
   physics::WorldSettings world;
   std::vector<physics::BodyDef> bodies;
   std::vector<render::Colour> colours;  // one per body
+  std::vector<physics::JointDef> joints;  // body indices into `bodies`
   render::Camera camera;
   render::VideoSettings video;
   DrawOptions draw;
