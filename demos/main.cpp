@@ -1,6 +1,7 @@
 // The `impulse` command line: scene files in, teaching videos out.
 #include "demos/render_scene.h"
 #include "demos/scene_file.h"
+#include "demos/video_quality.h"
 
 #include <CLI/CLI.hpp>
 
@@ -8,6 +9,8 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <optional>
+#include <sstream>
 #include <unistd.h>
 #include <vector>
 
@@ -16,19 +19,59 @@ using namespace impulse;
 
 namespace {
 
+// What the command line changes in every scene it renders.
+struct VideoOverrides {
+  std::string quality;  // empty: the scene's
+  std::optional<int> width, height, fps, crf;
+  int samples = 4;
+  std::string spheres = "impostor";
+
+  void apply(demos::Scene& scene, demos::RenderOptions& options) const {
+    render::VideoSettings& video = scene.video;
+    if (!quality.empty()) video = *demos::quality_preset(quality);
+    if (width) video.width = *width;
+    if (height) video.height = *height;
+    if (fps) video.fps = *fps;
+    if (crf) video.crf = *crf;
+    if (video.width % 2 || video.height % 2)
+      throw std::invalid_argument("--width and --height must be even (H.264 yuv420p halves the colour planes)");
+    options.renderer.samples = samples;
+    options.renderer.spheres = spheres == "tessellated" ? render::SphereMethod::tessellated : render::SphereMethod::impostor;
+  }
+};
+
 std::string default_video_path(const std::string& scene_path, const std::string& out_directory) {
   return (fs::path(out_directory) / fs::path(scene_path).stem()).string() + ".mp4";
 }
 
-int render_one(const std::string& scene_path, demos::RenderOptions options) {
-  const demos::Scene scene = demos::load_scene(scene_path);
+std::vector<int> parse_frames(const std::string& list) {
+  std::vector<int> frames;
+  std::stringstream stream(list);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    try {
+      size_t used = 0;
+      const int frame = std::stoi(item, &used);
+      if (used != item.size() || frame < 0) throw std::invalid_argument(item);
+      frames.push_back(frame);
+    } catch (const std::exception&) {
+      throw std::invalid_argument("--frames wants frame numbers from 0, separated by commas (like 0,45,90), got '" + list + "'");
+    }
+  }
+  return frames;
+}
+
+int render_one(const std::string& scene_path, demos::RenderOptions options, const VideoOverrides& overrides) {
+  demos::Scene scene = demos::load_scene(scene_path);
+  overrides.apply(scene, options);
   demos::render_scene(scene, options);
   if (!options.video_path.empty()) std::fprintf(stderr, "wrote %s\n", options.video_path.c_str());
   if (!options.png_directory.empty()) std::fprintf(stderr, "wrote frames to %s/\n", options.png_directory.c_str());
   return 0;
 }
 
-int render_catalogue(const std::string& scenes_directory, const std::string& out_directory, bool progress) {
+int render_catalogue(const std::string& scenes_directory, const std::string& out_directory, bool progress,
+                     const VideoOverrides& overrides) {
   if (!fs::is_directory(scenes_directory)) {
     std::fprintf(stderr, "impulse: no scene directory '%s' (run from the repository root, or pass --scenes DIR)\n",
                  scenes_directory.c_str());
@@ -43,47 +86,76 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
     demos::RenderOptions options;
     options.video_path = default_video_path(scene.string(), out_directory);
     options.progress = progress;
-    render_one(scene.string(), options);
+    render_one(scene.string(), options, overrides);
   }
   std::fprintf(stderr, "rendered %zu scenes into %s/\n", scenes.size(), out_directory.c_str());
   return 0;
+}
+
+void add_video_options(CLI::App* command, VideoOverrides& overrides) {
+  command->add_option("--quality", overrides.quality,
+                      "Preset: low (854x480, 15 fps), medium (1280x720, 30 fps), high (1920x1080, 60 fps); "
+                      "default: the scene's [video], else medium")
+      ->check(CLI::IsMember({"low", "medium", "high"}));
+  command->add_option("--width", overrides.width, "Frame width in pixels (even), over the preset")->check(CLI::Range(16, 7680));
+  command->add_option("--height", overrides.height, "Frame height in pixels (even)")->check(CLI::Range(16, 4320));
+  command->add_option("--fps", overrides.fps, "Frames per second of video (the physics keeps its own step)")
+      ->check(CLI::Range(1, 240));
+  command->add_option("--crf", overrides.crf, "H.264 constant rate factor: 0 lossless .. 51 worst; 18-23 look clean")
+      ->check(CLI::Range(0, 51));
+  command->add_option("--samples", overrides.samples, "Multisample anti-aliasing: 4 (default) or 0 for none")
+      ->check(CLI::IsMember({0, 2, 4, 8}));
+  command->add_option("--spheres", overrides.spheres,
+                      "How spheres are drawn: impostor (ray-cast, default) or tessellated (size-chosen meshes)")
+      ->check(CLI::IsMember({"impostor", "tessellated"}));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"impulse: rigid-body collision physics rendered into teaching videos, headless.\n"
-               "Scene files are TOML (see README.md, 'Scene files'); videos are H.264 MP4."};
+               "Scene files are TOML (see README.md, 'Scene files'); videos are H.264 MP4 (BT.709, faststart),\n"
+               "written as NAME.mp4.part and renamed when complete."};
   app.require_subcommand(1);
-  bool quiet = false;
-  app.add_flag("-q,--quiet", quiet, "No progress line on stderr");
+  bool quiet = false, force_progress = false;
+  app.add_flag("-q,--quiet", quiet, "No progress bar on stderr");
+  app.add_flag("--progress", force_progress, "A progress bar even when stderr is not a terminal (e.g. in a log)");
 
   auto* render = app.add_subcommand("render", "Simulate one scene file and write it as an MP4 video (and PNG frames)");
-  std::string scene_path, video_path, png_directory;
+  std::string scene_path, video_path, png_directory, frame_list;
+  VideoOverrides render_overrides;
   render->add_option("scene", scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
   render->add_option("-o,--output", video_path, "Video to write (default: out/<scene name>.mp4)");
-  render->add_option("--png", png_directory, "Also write every frame as PNG into this directory");
+  render->add_option("--png", png_directory, "Also write frames as PNG (frame_00000.png, ...) into this directory");
+  render->add_option("--frames", frame_list, "With --png: only these frames, numbered from 0, e.g. 0,45,90");
+  add_video_options(render, render_overrides);
 
   auto* catalogue = app.add_subcommand("catalogue", "Render every scene of a directory into videos");
   std::string scenes_directory = "assets/scenes", out_directory = "out";
+  VideoOverrides catalogue_overrides;
   catalogue->add_option("--scenes", scenes_directory, "Directory of scene files")->capture_default_str();
   catalogue->add_option("-o,--output", out_directory, "Directory for the videos")->capture_default_str();
+  add_video_options(catalogue, catalogue_overrides);
 
   auto* check = app.add_subcommand("check", "Read a scene file and report any error in it, without rendering");
   check->add_option("scene", scene_path, "Scene file (.toml)")->required();
 
   CLI11_PARSE(app, argc, argv);
-  const bool progress = !quiet && isatty(STDERR_FILENO);
+  const bool progress = !quiet && (force_progress || isatty(STDERR_FILENO));
   try {
     if (*render) {
       demos::RenderOptions options;
       options.video_path = video_path.empty() ? default_video_path(scene_path, "out") : video_path;
       options.png_directory = png_directory;
+      if (!frame_list.empty()) {
+        if (png_directory.empty()) throw std::invalid_argument("--frames chooses PNG frames: add --png DIR");
+        options.png_frames = parse_frames(frame_list);
+      }
       options.progress = progress;
       if (video_path.empty()) fs::create_directories("out");
-      return render_one(scene_path, options);
+      return render_one(scene_path, options, render_overrides);
     }
-    if (*catalogue) return render_catalogue(scenes_directory, out_directory, progress);
+    if (*catalogue) return render_catalogue(scenes_directory, out_directory, progress, catalogue_overrides);
     if (*check) {
       const demos::Scene scene = demos::load_scene(scene_path);
       std::printf("%s: fine, %zu bodies, %.1f s\n", scene_path.c_str(), scene.bodies.size(), scene.duration);

@@ -1,11 +1,21 @@
 #include "demos/render_scene.h"
 
+#include "demos/camera_path.h"
+#include "demos/contact_hold.h"
+#include "demos/frame_overlay.h"
+#include "demos/marks.h"
+#include "demos/playback_timeline.h"
+#include "demos/plot_recorder.h"
+#include "demos/progress_bar.h"
+#include "demos/scene_draw_list.h"
+#include "demos/scene_preview.h"
+#include "render/frame_pipeline.h"
+#include "render/overlay_painter.h"
 #include "render/png_io.h"
-#include "render/renderer.h"
 #include "render/video_encoder.h"
 
-#include <chrono>
-#include <cmath>
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -14,15 +24,18 @@ namespace impulse::demos {
 
 namespace {
 
-render::Vec3f to_float(const physics::Vec3& v) { return v.cast<float>(); }
+constexpr int kFramesInFlight = 3;  // drawn, being finished, waiting: enough to keep both busy
 
-// Contact normals: a teaching convention kept across all demos (README, "Colours").
-constexpr render::Colour kNormalColour{0.84f, 0.37f, 0.00f};  // vermillion
-
-std::string frame_file(const std::string& directory, int index) {
+std::string frame_file(const std::string& directory, int64_t index) {
   char name[32];
-  std::snprintf(name, sizeof name, "frame_%05d.png", index);
+  std::snprintf(name, sizeof name, "frame_%05lld.png", static_cast<long long>(index));
   return (std::filesystem::path(directory) / name).string();
+}
+
+bool wants_png(const RenderOptions& options, int64_t index) {
+  if (options.png_directory.empty()) return false;
+  return options.png_frames.empty() ||
+         std::find(options.png_frames.begin(), options.png_frames.end(), index) != options.png_frames.end();
 }
 
 }  // namespace
@@ -35,58 +48,74 @@ physics::World build_world(const Scene& scene) {
 }
 
 render::DrawList make_draw_list(const Scene& scene, const physics::World& world, const physics::StepRecord& record) {
-  render::DrawList list;
-  list.camera = scene.camera;
-  list.ground = false;
-  const auto& bodies = world.bodies();
-  for (size_t i = 0; i < bodies.size(); ++i) {
-    const physics::Body& body = bodies[i];
-    switch (body.shape.type) {
-      case physics::ShapeType::sphere:
-        list.spheres.push_back({to_float(body.position), float(body.shape.radius), body.orientation.cast<float>(), scene.colours[i]});
-        break;
-      case physics::ShapeType::box:
-        list.boxes.push_back({to_float(body.position), body.shape.half_extents.cast<float>(), body.orientation.cast<float>(), scene.colours[i]});
-        break;
-      case physics::ShapeType::plane:
-        // The renderer draws one ground; a horizontal plane becomes it.
-        if (body.shape.normal.y() > 0.999) {
-          list.ground = true;
-          list.ground_height = float(body.shape.offset);
-        }
-        break;
-    }
-  }
-  if (scene.draw.contact_normals)
-    for (const physics::ContactRecord& contact : record.contacts)
-      list.arrows.push_back({to_float(contact.point), to_float(contact.normal) * scene.draw.normal_length, kNormalColour});
-  return list;
+  return scene_draw_list(scene, world.bodies(), poses_of(world.bodies()), record.contacts,
+                         arrow_scales(scene.draw, ScenePreview{}), scene.camera);
 }
 
 void render_scene(const Scene& scene, const RenderOptions& options) {
-  physics::World world = build_world(scene);
   const render::VideoSettings& video = scene.video;
-  render::Renderer renderer(video.width, video.height);
+  const ScenePreview preview = preview_scene(scene);
+  const ArrowScales scales = arrow_scales(scene.draw, preview);
+  const PlaybackTimeline timeline(scene.playback, preview.impact_times, scene.duration, video.fps);
+
+  physics::World world = build_world(scene);
+  const double step = scene.world.time_step;
+  render::Renderer renderer(video.width, video.height, options.renderer);
   std::unique_ptr<render::VideoEncoder> encoder;
   if (!options.video_path.empty()) encoder = std::make_unique<render::VideoEncoder>(options.video_path, video);
   if (!options.png_directory.empty()) std::filesystem::create_directories(options.png_directory);
 
-  const int frame_count = int(std::lround(scene.duration * video.fps));
-  const auto start = std::chrono::steady_clock::now();
-  physics::StepRecord shown = world.last_record();
-  for (int frame = 0; frame < frame_count; ++frame) {
-    // Step the world up to this frame's time; show the contacts of the last step taken.
-    const double frame_time = double(frame) / video.fps;
-    while (world.time() + scene.world.time_step / 2 <= frame_time) shown = world.step();
-    const render::Frame& image = renderer.draw(make_draw_list(scene, world, shown));
-    if (encoder) encoder->add_frame(image);
-    if (!options.png_directory.empty()) render::write_png(frame_file(options.png_directory, frame), image);
-    if (options.progress && (frame % 15 == 14 || frame + 1 == frame_count)) {
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::fprintf(stderr, "\r%s: frame %d/%d, %.1f frames/s ", scene.path.c_str(), frame + 1, frame_count, (frame + 1) / seconds);
-      if (frame + 1 == frame_count) std::fputc('\n', stderr);
+  PlotRecorder plots(scene.overlay.plots, plotted_body(world.bodies(), scene.overlay.plot_body));
+  ContactHold hold(scene.draw.contact_hold);
+  CameraPath camera_path(scene);
+  const FrameOverlay overlay_maker(scene, preview, scales, video.width, video.height);
+  ProgressBar progress(options.progress, scene.path, timeline.frame_count());
+
+  // The worker finishes frames in order: overlay, PNG, encoder. Declared after the encoder, so
+  // it stops before the encoder (and its .part file) goes.
+  render::OverlayPainter painter(video.width, video.height);
+  std::atomic<int> frames_finished{0};
+  render::FramePipeline pipeline(kFramesInFlight, [&](render::FrameJob& job) {
+    painter.paint(job.overlay, job.frame);
+    if (wants_png(options, job.index)) render::write_png(frame_file(options.png_directory, job.index), job.frame);
+    if (encoder) encoder->add_frame(job.frame);
+    ++frames_finished;
+  });
+
+  std::vector<BodyPose> before = poses_of(world.bodies()), after = before, shown;
+  double time = 0;
+  for (int frame = 0; frame < timeline.frame_count(); ++frame) {
+    const double video_time = double(frame) / video.fps;
+    // Step until the world is at or past this frame's moment; draw the bodies in between.
+    while (world.time() < time - 1e-9) {
+      before.swap(after);
+      const physics::StepRecord& record = world.step();
+      after = poses_of(world.bodies());
+      hold.add_step(record, video_time);
+      plots.add_step(record, world.bodies());
     }
+    const double weight = world.step_count() == 0 ? 1.0 : std::clamp(1.0 - (world.time() - time) / step, 0.0, 1.0);
+    interpolate(before, after, weight, shown);
+
+    const int followed = camera_path.followed_body();
+    FrameState state;
+    state.time = time;
+    state.speed = timeline.speed_at(time);
+    state.slow_motion = timeline.slow_motion_at(time);
+    state.bodies = &world.bodies();
+    state.poses = &shown;
+    state.contacts = &hold.shown(video_time);
+    state.camera = camera_path.at(time, followed >= 0 ? shown[followed].position : physics::Vec3::Zero());
+
+    render::FrameJob& job = pipeline.acquire();
+    renderer.draw_into(scene_draw_list(scene, world.bodies(), shown, *state.contacts, scales, state.camera), job.frame);
+    overlay_maker.make(state, plots, job.overlay);
+    pipeline.submit();
+    progress.update(frames_finished);
+    time = timeline.next_frame_time(time);
   }
+  pipeline.finish();
+  progress.finish();
   if (encoder) encoder->finish();
 }
 

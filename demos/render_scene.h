@@ -1,22 +1,29 @@
-// Runs a scene and films it: world -> steps -> draw list -> frame -> MP4 (and PNGs).
+// Runs a scene and films it: world -> steps -> draw list -> frame (+ overlay) -> MP4 (and PNGs).
+// Drawing happens on the calling thread (llvmpipe adds its own threads); the overlay, PNG files
+// and the encoder run on a worker thread, a few frames behind (render/frame_pipeline.h).
 #pragma once
 #include "demos/scene_file.h"
 #include "physics/world.h"
 #include "render/draw_list.h"
+#include "render/renderer.h"
 
 #include <string>
+#include <vector>
 
 namespace impulse::demos {
 
 struct RenderOptions {
   std::string video_path;        // .mp4; empty: no video
   std::string png_directory;     // empty: no PNG frames
-  bool progress = false;         // a progress line on stderr
+  std::vector<int> png_frames;   // which frames become PNGs (numbered from 0); empty: all
+  bool progress = false;         // a progress bar on stderr (for renders over a second)
+  render::RendererSettings renderer;
 };
 
 physics::World build_world(const Scene& scene);
 
-// What frame shows the world, from the bodies and the last step's records.
+// What a frame shows of the world as it is, with the last step's contacts (no hold, no
+// interpolation, arrow scales of 1 m per unit unless the scene sets them): for tests and stills.
 render::DrawList make_draw_list(const Scene& scene, const physics::World& world, const physics::StepRecord& record);
 
 // Renders the whole scene. Throws on any failure; a video is complete under its final name or

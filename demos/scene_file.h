@@ -1,6 +1,7 @@
 // Scene files (TOML): the world, its bodies, the camera and the video, as a lecturer writes them.
 // The format is described in README.md, "Scene files".
 #pragma once
+#include "demos/view_options.h"
 #include "physics/world.h"
 #include "render/draw_list.h"
 #include "render/video_encoder.h"
@@ -17,9 +18,18 @@ class SceneError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// [draw]: the physics made visible, each switchable (colours: README.md, "Colours").
 struct DrawOptions {
+  bool contact_points = true;    // a dot at each contact point
   bool contact_normals = true;   // an arrow along each contact's normal while it lasts
   float normal_length = 0.6f;    // m
+  bool impulses = true;          // the normal impulse on each moving body, as an arrow
+  bool friction = true;          // the friction (tangential) impulse, as an arrow
+  float impulse_scale = 0.0f;    // m of arrow per N s; 0: chosen so the largest impulse is about 1.5 m
+  float contact_hold = 0.4f;     // s of video a contact stays drawn after its step (impacts last one step)
+  bool velocities = false;       // each moving body's velocity, as an arrow from its centre
+  float velocity_scale = 0.0f;   // m of arrow per m/s; 0: chosen so the fastest body's is about 1.5 m
+  bool sleeping = true;          // sleeping bodies pale and hatched
 };
 
 struct Scene {
@@ -31,8 +41,12 @@ struct Scene {
   std::vector<render::Colour> colours;  // one per body
   std::vector<physics::JointDef> joints;  // body indices into `bodies`
   render::Camera camera;
+  CameraMotion camera_motion;
   render::VideoSettings video;
   DrawOptions draw;
+  OverlayOptions overlay;
+  std::vector<CaptionCue> captions;
+  PlaybackOptions playback;
 };
 
 Scene load_scene(const std::string& path);

@@ -10,6 +10,6 @@ void read_world(TableReader& top, Scene& scene);   // [world]
 void read_bodies(TableReader& top, Scene& scene);  // [[body]]
 void read_patterns(TableReader& top, Scene& scene);  // [[pyramid]], [[lattice]]: many bodies at once
 void read_joints(TableReader& top, Scene& scene);  // [[joint]], after the bodies they name
-void read_view(TableReader& top, Scene& scene);    // [camera], [video], [draw]
+void read_view(TableReader& top, Scene& scene);    // [camera], [video], [draw], [overlay], [[caption]], [playback]
 
 }  // namespace impulse::demos

@@ -29,8 +29,9 @@ struct BoxItem {
   bool sleeping = false;
 };
 // An arrow from `origin` along `direction` (its length is the arrow's length in metres).
-// Arrows and points are drawn in flat colours, and faintly where a body hides them.
-struct ArrowItem { Vec3f origin; Vec3f direction; Colour colour; };
+// Arrows and points are drawn in flat colours, and faintly where a body hides them. Where arrows
+// overlap (e.g. a velocity and an impulse along one line), the higher `layer` is drawn on top.
+struct ArrowItem { Vec3f origin; Vec3f direction; Colour colour; int layer = 0; };
 // A dot of a fixed size on screen (e.g. a contact point), whatever its distance.
 struct PointItem { Vec3f position; Colour colour; float radius_pixels = 4.0f; };
 

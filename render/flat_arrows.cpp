@@ -8,6 +8,7 @@ namespace {
 
 constexpr float kMinShaftWidthPixels = 2.5f;
 constexpr float kMinHeadWidthPixels = 10.0f;
+constexpr float kLayerOffset = 0.002f;  // of the distance to the eye, towards it, per layer
 
 void add(std::vector<FlatVertex>& triangles, const Vec3f& p, const Colour& colour) {
   triangles.push_back({{p.x(), p.y(), p.z()}, {colour.r, colour.g, colour.b}});
@@ -33,17 +34,21 @@ void append_flat_arrow(const ArrowItem& arrow, const CameraView& camera, std::ve
   const float head_half_width = std::max(0.38f * head_length, 0.5f * kMinHeadWidthPixels * metres_per_pixel);
   const float shaft_half_width = std::max(0.3f * head_half_width, 0.5f * kMinShaftWidthPixels * metres_per_pixel);
 
-  const Vec3f head_base = arrow.origin + axis * (length - std::min(head_length, length));
-  const Vec3f tip = arrow.origin + arrow.direction;
+  // Layers: each moves the arrow a little towards the eye, without changing its size on screen.
+  const Vec3f to_eye = camera.position - middle;
+  const Vec3f lift = to_eye * (kLayerOffset * static_cast<float>(std::clamp(arrow.layer, 0, 10)));
+  const Vec3f origin = arrow.origin + lift;
+  const Vec3f head_base = origin + axis * (length - std::min(head_length, length));
+  const Vec3f tip = origin + arrow.direction;
   const Vec3f shaft_side = side * shaft_half_width;
   const Vec3f head_side = side * head_half_width;
   const Colour& c = arrow.colour;
-  add(triangles, arrow.origin - shaft_side, c);
+  add(triangles, origin - shaft_side, c);
   add(triangles, head_base - shaft_side, c);
   add(triangles, head_base + shaft_side, c);
-  add(triangles, arrow.origin - shaft_side, c);
+  add(triangles, origin - shaft_side, c);
   add(triangles, head_base + shaft_side, c);
-  add(triangles, arrow.origin + shaft_side, c);
+  add(triangles, origin + shaft_side, c);
   add(triangles, head_base - head_side, c);
   add(triangles, tip, c);
   add(triangles, head_base + head_side, c);

@@ -29,20 +29,31 @@ struct LegendEntry {
 };
 
 // A small line plot that grows as the video plays: x is simulated time from 0 to `x_end`.
+// The y range is fixed when y_max > y_min (a plot that keeps its scale reads best), else it
+// follows the points.
 struct Plot {
   std::string title;   // e.g. "kinetic energy"
   std::string unit;    // e.g. "J"
   Colour colour;
   float x_end = 1.0f;  // s: the right edge, so the curve grows towards it
+  float y_min = 0.0f;
+  float y_max = 0.0f;
   std::vector<Vec2f> points;  // (time s, value), in time order
+};
+
+// A caption line; `opacity` in [0, 1] lets it fade in and out at the ends of its time cue.
+struct Caption {
+  std::string text;
+  float opacity = 1.0f;
 };
 
 struct Overlay {
   std::string title;                  // top left
-  std::vector<std::string> captions;  // lines shown now, bottom centre
+  std::vector<Caption> captions;      // lines shown now, bottom centre
   std::vector<OverlayLabel> labels;
   std::string clock;                  // top right, e.g. "t = 1.25 s"
   std::string playback;               // under the clock, e.g. "slow motion ×0.25"; empty: none
+  bool playback_highlight = false;    // draw `playback` in bold vermillion (slow motion is on)
   std::vector<LegendEntry> legend;    // under the title
   std::vector<Plot> plots;            // a column at the right
 

@@ -27,7 +27,7 @@ namespace {
 
 constexpr GLuint kShadowTextureUnit = 0;
 constexpr float kOutlineTolerancePixels = 0.25f;  // how far a tessellated outline may stray
-constexpr float kArrowGhostAlpha = 0.45f;  // the parts of arrows hidden behind bodies, drawn flat
+constexpr float kArrowGhostAlpha = 0.55f;  // the parts of arrows hidden behind bodies, drawn flat
 const Vec3f kGroundColour(0.84f, 0.85f, 0.86f);
 
 Vec3f to_vector(const Colour& colour) { return {colour.r, colour.g, colour.b}; }

@@ -74,7 +74,7 @@ float edge_shade(vec3 p) {
 // Diagonal stripes in screen space, 8 pixels apart.
 float hatch_shade() {
   float stripe = mod(gl_FragCoord.x + gl_FragCoord.y, 8.0);
-  return mix(1.0, 0.86, smoothstep(0.5, 1.5, stripe) * (1.0 - smoothstep(2.5, 3.5, stripe)));
+  return mix(1.0, 0.8, smoothstep(0.5, 1.5, stripe) * (1.0 - smoothstep(2.5, 3.5, stripe)));
 }
 
 vec4 surface_colour(vec3 srgb, int style, vec3 local, vec3 world, vec3 normal) {
@@ -82,7 +82,7 @@ vec4 surface_colour(vec3 srgb, int style, vec3 local, vec3 world, vec3 normal) {
   float specular = 0.35;
   if ((style & kStyleSleeping) != 0) {
     float grey = dot(albedo, vec3(0.2126, 0.7152, 0.0722));
-    albedo = mix(albedo, vec3(grey), 0.55) * 0.55 + 0.42;
+    albedo = mix(albedo, vec3(grey), 0.45) * 0.7 + 0.25;
     specular = 0.0;
   }
   if ((style & kStyleSpinMarks) != 0) albedo *= octant_shade(local);

@@ -18,7 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A small scene: one orange ball resting at the camera's target, so it is drawn at the centre.
+// A small scene: one orange ball resting at the camera's target, so it is drawn at the centre
+// (no marks: nothing is drawn over it).
 constexpr const char* kSceneText = R"(
 [scene]
 duration = 1.0
@@ -29,6 +30,12 @@ target = [0, 0.5, 0]
 width = 320
 height = 240
 fps = 30
+[draw]
+contact_points = false
+contact_normals = false
+impulses = false
+friction = false
+sleeping = false
 [[body]]
 shape = "plane"
 [[body]]

@@ -1,0 +1,94 @@
+#include "demos/frame_overlay.h"
+
+#include "demos/captions.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace impulse::demos {
+namespace {
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+// 2.41, 24.1, 241: three significant figures without an exponent.
+std::string value_text(double value) {
+  const double magnitude = std::abs(value);
+  return format(magnitude >= 100 ? "%.0f" : magnitude >= 10 ? "%.1f" : "%.2f", value);
+}
+
+std::string playback_text(double speed, bool slow_motion, double base_speed) {
+  if (slow_motion) return "slow motion \u00d7" + format("%.2f", speed);
+  if (std::abs(speed - 1.0) < 1e-6 && std::abs(base_speed - 1.0) < 1e-6) return "real time";
+  return "playback \u00d7" + format("%.2f", speed);
+}
+
+}  // namespace
+
+FrameOverlay::FrameOverlay(const Scene& scene, const ScenePreview& preview, const ArrowScales& scales, int width,
+                           int height)
+    : scene_(scene), preview_(preview), scales_(scales), width_(width), height_(height) {
+  for (size_t i = 0; i < scene.bodies.size(); ++i)
+    if (!scene.overlay.label_body.empty() && scene.bodies[i].name == scene.overlay.label_body) label_body_ = int(i);
+}
+
+void FrameOverlay::add_label(const FrameState& state, const render::CameraView& view, render::Overlay& overlay) const {
+  const std::string& kind = scene_.overlay.label;
+  const auto& bodies = *state.bodies;
+  auto chosen = [&](int body) {
+    return body >= 0 && body < int(bodies.size()) && !bodies[body].is_static() && (label_body_ < 0 || body == label_body_);
+  };
+  render::Vec3f tip = render::Vec3f::Zero();
+  std::string text;
+  render::Colour colour;
+  if (kind == "impulse") {
+    double largest = 0;
+    for (const physics::ContactRecord& contact : *state.contacts) {
+      for (int body : {contact.body_a, contact.body_b}) {
+        if (!chosen(body) || !(contact.normal_impulse > largest)) continue;
+        largest = contact.normal_impulse;
+        tip = contact.point.cast<float>() + impulse_on(contact, body) * float(scales_.impulse);
+      }
+    }
+    if (largest <= 0) return;
+    text = "J = " + value_text(largest) + " N\u00b7s";
+    colour = mark_colour::normal_impulse;
+  } else if (kind == "velocity") {
+    double fastest = -1;
+    for (size_t i = 0; i < bodies.size(); ++i) {
+      if (!chosen(int(i)) || !(bodies[i].velocity.norm() > fastest)) continue;
+      fastest = bodies[i].velocity.norm();
+      tip = ((*state.poses)[i].position + bodies[i].velocity * scales_.velocity).cast<float>();
+    }
+    if (fastest < 0) return;
+    text = "v = " + value_text(fastest) + " m/s";
+    colour = mark_colour::velocity;
+  } else {
+    return;
+  }
+  if (const auto pixels = view.to_pixels(tip)) overlay.labels.push_back({*pixels, text, colour});
+}
+
+void FrameOverlay::make(const FrameState& state, const PlotRecorder& plots, render::Overlay& overlay) const {
+  const OverlayOptions& options = scene_.overlay;
+  const render::CameraView view = render::make_camera_view(state.camera, width_, height_);
+  overlay.title = options.title ? scene_.title : "";
+  overlay.captions = captions_at(scene_.captions, state.time);
+  overlay.labels.clear();
+  add_label(state, view, overlay);
+  overlay.clock = options.clock ? format("t = %.2f s", state.time) : "";
+  overlay.playback = options.clock ? playback_text(state.speed, state.slow_motion, scene_.playback.speed) : "";
+  overlay.playback_highlight = state.slow_motion;
+  overlay.legend = options.legend ? legend(scene_.draw, scales_, view, state.camera.target) : std::vector<render::LegendEntry>{};
+  if (!options.plots.empty()) {
+    const int body = plotted_body(*state.bodies, options.plot_body);
+    overlay.plots = plots.plots(scene_.duration, preview_.plot_maxima, body >= 0 ? (*state.bodies)[body].name : "");
+  } else {
+    overlay.plots.clear();
+  }
+}
+
+}  // namespace impulse::demos

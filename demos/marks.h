@@ -1,0 +1,36 @@
+// The teaching marks drawn over the bodies, one convention for every demo (README.md,
+// "Colours"): their colours, and the scales that turn impulses and velocities into arrow lengths.
+#pragma once
+#include "demos/scene_file.h"
+#include "demos/scene_preview.h"
+#include "render/camera_view.h"
+#include "render/overlay.h"
+
+#include <vector>
+
+namespace impulse::demos {
+
+// Okabe-Ito colours, told apart with any colour vision.
+namespace mark_colour {
+inline constexpr render::Colour contact_point{0.00f, 0.00f, 0.00f};     // black dot
+inline constexpr render::Colour contact_normal{0.84f, 0.37f, 0.00f};    // vermillion
+inline constexpr render::Colour normal_impulse{0.00f, 0.45f, 0.70f};    // blue
+inline constexpr render::Colour friction_impulse{0.80f, 0.47f, 0.65f};  // reddish purple
+inline constexpr render::Colour velocity{0.20f, 0.20f, 0.20f};          // near black
+}  // namespace mark_colour
+
+struct ArrowScales {
+  double impulse = 1.0;   // m of arrow per N s
+  double velocity = 1.0;  // m of arrow per m/s
+};
+
+// The scene's scales, or (for 0) a round number (1, 2 or 5 times a power of ten) that draws the
+// largest value of the preview about 1.5 m long.
+ArrowScales arrow_scales(const DrawOptions& draw, const ScenePreview& preview);
+
+// The legend for the marks the scene draws. Arrow entries show how long a round value (1 N s,
+// 0.5 m/s, ...) is on screen at the camera's target.
+std::vector<render::LegendEntry> legend(const DrawOptions& draw, const ArrowScales& scales,
+                                        const render::CameraView& camera, const render::Vec3f& target);
+
+}  // namespace impulse::demos
