@@ -121,11 +121,21 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
     m.twist_mass = safe_inverse(first.normal.dot((sa.inv_inertia + sb.inv_inertia) * first.normal));
     m.twist_radius = 0;
     for (int i = 0; i < m.count; ++i) m.twist_radius += (constraints_[m.first + i].anchor_a - centre).norm() / m.count;
+    const Body& body_a = bodies[m.a];
+    const Body& body_b = bodies[m.b];
+    m.local_anchor_a = body_a.orientation.conjugate() * m.centre_a;
+    m.local_anchor_b = body_b.orientation.conjugate() * m.centre_b;
     pair_keys_.push_back(pair_key(m.a, m.b));
     if (auto warm = warm_friction_.find(pair_keys_.back()); warm != warm_friction_.end()) {
       m.tangent_impulse1 = warm->second.tangent1;
       m.tangent_impulse2 = warm->second.tangent2;
       m.twist_impulse = warm->second.twist;
+      if (warm->second.anchored) {
+        m.local_anchor_a = warm->second.local_anchor_a;
+        m.local_anchor_b = warm->second.local_anchor_b;
+        const Vec3 offset = (body_a.position + body_a.orientation * m.local_anchor_a) - (body_b.position + body_b.orientation * m.local_anchor_b);
+        m.drift = offset - offset.dot(first.normal) * first.normal;
+      }
     }
   }
 }
@@ -153,7 +163,7 @@ void ContactSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_b
     if (constraints_[m.first].friction == 0) continue;
     Real normal_sum = 0;
     for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].normal_impulse;
-    solve_friction(m, sa, sb, normal_sum);
+    solve_friction(m, sa, sb, normal_sum, use_bias);
   }
 }
 
@@ -204,14 +214,26 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
 
 // Coulomb friction at the points' centroid, within the disc of radius mu times their total
 // normal impulse, and a twist about the normal within mu times that times the points' spread.
-void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum) const {
+void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum, bool use_bias) {
   const ContactConstraint& first = constraints_[m.first];
   const Real limit = first.friction * normal_sum;
   const Vec3 dv = relative_velocity(sa, sb, m.centre_a, m.centre_b);
+  // Static friction also undoes the drift from where the pair first touched, softly, as the
+  // normal rows undo penetration; without it tiny slips add up and stacks creep.
+  Vec3 drift = Vec3::Zero();
+  Real mass_scale = 1, impulse_scale = 0;
+  if (use_bias) {
+    const Vec3 moved = (sa.dp - sb.dp) + (sa.dq * m.centre_a - sb.dq * m.centre_b) - (m.centre_a - m.centre_b);
+    drift = first.softness.bias_rate * (m.drift + moved);
+    mass_scale = first.softness.mass_scale;
+    impulse_scale = first.softness.impulse_scale;
+  }
   const Real old1 = m.tangent_impulse1, old2 = m.tangent_impulse2;
-  m.tangent_impulse1 -= m.tangent_mass1 * dv.dot(first.tangent1);
-  m.tangent_impulse2 -= m.tangent_mass2 * dv.dot(first.tangent2);
+  m.tangent_impulse1 += -m.tangent_mass1 * mass_scale * (dv + drift).dot(first.tangent1) - impulse_scale * old1;
+  m.tangent_impulse2 += -m.tangent_mass2 * mass_scale * (dv + drift).dot(first.tangent2) - impulse_scale * old2;
+  const Real wanted = std::hypot(m.tangent_impulse1, m.tangent_impulse2);
   clamp_to_disc(m.tangent_impulse1, m.tangent_impulse2, limit);
+  if (wanted > limit * 1.0001 + 1e-12) m.slipped = true;
   apply_impulse(sa, sb, m.centre_a, m.centre_b, (m.tangent_impulse1 - old1) * first.tangent1 + (m.tangent_impulse2 - old2) * first.tangent2);
 
   if (m.twist_radius == 0) return;
@@ -336,7 +358,9 @@ void ContactSolver::store_impulses() {
   for (size_t i = 0; i < constraints_.size(); ++i) warm_normal_[point_keys_[i]] = constraints_[i].normal_impulse;
   for (size_t k = 0; k < manifolds_.size(); ++k) {
     ManifoldConstraint& m = manifolds_[k];
-    warm_friction_[pair_keys_[k]] = {m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse};
+    // A pair that slipped is anchored afresh where it touches now.
+    WarmFriction& warm = warm_friction_[pair_keys_[k]];
+    warm = {m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse, m.local_anchor_a, m.local_anchor_b, !m.slipped};
     // For the records: each point's share of the friction, by its share of the normal impulse.
     Real normal_sum = 0;
     for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].total_normal_impulse;

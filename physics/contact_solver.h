@@ -59,6 +59,11 @@ struct ManifoldConstraint {
   Real tangent_mass1 = 0, tangent_mass2 = 0, twist_mass = 0;
   Real twist_radius = 0;               // mean distance of the points from the centroid
   Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;  // this sub-step's
+  // Static friction's anchor: where the pair first touched, in each body's frame, and how far A
+  // has slid from it over B at step start. Friction pulls that drift back until it slips.
+  Vec3 local_anchor_a = Vec3::Zero(), local_anchor_b = Vec3::Zero();
+  Vec3 drift = Vec3::Zero();
+  bool slipped = false;
   Real total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
   bool bounced = false;                // restitution applied this step
   Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
@@ -81,13 +86,13 @@ class ContactSolver {
 
  private:
   void solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias);
-  void solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum) const;
+  void solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum, bool use_bias);
   bool bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real h);
 
   std::vector<ContactConstraint> constraints_;
   std::vector<ManifoldConstraint> manifolds_;
   std::vector<uint64_t> point_keys_, pair_keys_;
-  struct WarmFriction { Real tangent1, tangent2, twist; };
+  struct WarmFriction { Real tangent1, tangent2, twist; Vec3 local_anchor_a, local_anchor_b; bool anchored; };
   std::unordered_map<uint64_t, Real> warm_normal_;           // by pair and feature
   std::unordered_map<uint64_t, WarmFriction> warm_friction_;  // by pair
   ContactSolverSettings settings_;
