@@ -98,18 +98,14 @@ void read_world(TableReader& top, Scene& scene) {
 }
 
 void read_bodies(TableReader& top, Scene& scene) {
-  const toml::node* node = top.get("body");
-  if (!node) return;
-  const toml::array* bodies = node->as_array();
-  if (!bodies || !bodies->is_array_of_tables()) top.fail(node, "body", "must be a list of [[body]] tables");
+  const toml::array* bodies = top.table_list("body");
+  if (!bodies) return;
   for (size_t i = 0; i < bodies->size(); ++i) read_body(*bodies->get(i)->as_table(), scene.path, int(i), scene);
 }
 
 void read_joints(TableReader& top, Scene& scene) {
-  const toml::node* node = top.get("joint");
-  if (!node) return;
-  const toml::array* joints = node->as_array();
-  if (!joints || !joints->is_array_of_tables()) top.fail(node, "joint", "must be a list of [[joint]] tables");
+  const toml::array* joints = top.table_list("joint");
+  if (!joints) return;
   for (size_t i = 0; i < joints->size(); ++i) {
     const toml::table& table = *joints->get(i)->as_table();
     physics::JointDef def;

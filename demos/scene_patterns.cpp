@@ -25,14 +25,6 @@ physics::BodyDef base_body(TableReader& r, const std::string& name) {
   return def;
 }
 
-const toml::array* pattern_list(TableReader& top, std::string_view key) {
-  const toml::node* node = top.get(key);
-  if (!node) return nullptr;
-  const toml::array* list = node->as_array();
-  if (!list || !list->is_array_of_tables()) top.fail(node, key, "must be a list of [[" + std::string(key) + "]] tables");
-  return list;
-}
-
 // Unit-spaced rows of boxes, each row one shorter and half a box further in, centred at x = 0.
 void read_pyramid(TableReader& r, Scene& scene) {
   const int base = r.integer("base", 10, 1, 200);
@@ -84,12 +76,12 @@ void read_lattice(TableReader& r, Scene& scene) {
 }  // namespace
 
 void read_patterns(TableReader& top, Scene& scene) {
-  if (const toml::array* list = pattern_list(top, "pyramid"))
+  if (const toml::array* list = top.table_list("pyramid"))
     for (size_t i = 0; i < list->size(); ++i) {
       TableReader r(*list->get(i)->as_table(), scene.path, "[[pyramid]] " + std::to_string(i + 1));
       read_pyramid(r, scene);
     }
-  if (const toml::array* list = pattern_list(top, "lattice"))
+  if (const toml::array* list = top.table_list("lattice"))
     for (size_t i = 0; i < list->size(); ++i) {
       TableReader r(*list->get(i)->as_table(), scene.path, "[[lattice]] " + std::to_string(i + 1));
       read_lattice(r, scene);

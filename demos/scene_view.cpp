@@ -134,10 +134,8 @@ void read_overlay(TableReader& top, Scene& scene, const std::vector<std::string>
 }
 
 void read_captions(TableReader& top, Scene& scene) {
-  const toml::node* node = top.get("caption");
-  if (!node) return;
-  const toml::array* captions = node->as_array();
-  if (!captions || !captions->is_array_of_tables()) top.fail(node, "caption", "must be a list of [[caption]] tables");
+  const toml::array* captions = top.table_list("caption");
+  if (!captions) return;
   for (const toml::node& item : *captions) {
     TableReader r(*item.as_table(), scene.path, "[[caption]]");
     CaptionCue cue;

@@ -114,6 +114,14 @@ const toml::table* TableReader::table(std::string_view key) {
   return node->as_table();
 }
 
+const toml::array* TableReader::table_list(std::string_view key) {
+  const toml::node* node = get(key);
+  if (!node) return nullptr;
+  const toml::array* list = node->as_array();
+  if (!list || !list->is_array_of_tables()) fail(node, key, "must be a list of [[" + std::string(key) + "]] tables");
+  return list;
+}
+
 void TableReader::finish() const {
   for (const auto& [key, node] : table_) {
     if (used_.count(key.str())) continue;

@@ -34,6 +34,8 @@ class TableReader {
 
   // The sub-table `key` of this table, or null when absent; anything but a table is an error.
   const toml::table* table(std::string_view key);
+  // The list of [[key]] tables, or null when absent; anything else is an error.
+  const toml::array* table_list(std::string_view key);
 
   void finish() const;  // call last
 
