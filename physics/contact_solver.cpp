@@ -194,8 +194,9 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
   }
 
   // Accumulated and clamped to push only; the target is "stop approaching" (restitution is
-  // bounce()'s). Several passes when the manifold has several points.
-  const int passes = row_count == 1 ? 1 : kManifoldIterations;
+  // bounce()'s). Several passes when the manifold has several points; the relax pass, which only
+  // takes back the bias velocity, makes do with one.
+  const int passes = row_count == 1 || !use_bias ? 1 : kManifoldIterations;
   for (int pass = 0; pass < passes; ++pass) {
     for (int k = 0; k < row_count; ++k) {
       const Row& row = rows[k];
