@@ -2,7 +2,6 @@
 
 #include "physics/teaching_methods.h"
 
-
 #include <stdexcept>
 #include <string>
 
