@@ -60,6 +60,13 @@ void OffscreenTarget::bind_for_drawing() const {
   glViewport(0, 0, width_, height_);
 }
 
+void OffscreenTarget::copy_samples_to(const OffscreenTarget& other) const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_.id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, other.multisample_framebuffer_.id());
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
+                    GL_NEAREST);
+}
+
 void OffscreenTarget::resolve_into(Frame& frame) {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_.id());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_.id());

@@ -14,6 +14,8 @@ class OffscreenTarget {
   OffscreenTarget(int width, int height, int samples);  // throws std::runtime_error if incomplete
 
   void bind_for_drawing() const;  // binds the draw framebuffer and sets the viewport
+  // Copies this target's colour and depth samples into `other` (same size and samples).
+  void copy_samples_to(const OffscreenTarget& other) const;
   void resolve_into(Frame& frame);  // resolves the samples and reads RGBA, rows top to bottom
 
   int width() const { return width_; }

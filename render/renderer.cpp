@@ -14,6 +14,7 @@
 #include "render/flat_arrows.h"
 #include "render/flat_mesh.h"
 #include "render/gpu_mesh.h"
+#include "render/ground_shadow.h"
 #include "render/instance.h"
 #include "render/level_of_detail.h"
 #include "render/mesh.h"
@@ -43,6 +44,22 @@ void throw_on_gl_error(const char* during) {
   throw std::runtime_error(message);
 }
 
+// What the kept sky and ground were drawn for.
+struct BackgroundKey {
+  Camera camera;
+  Colour background;
+  bool ground;
+  float ground_height;
+  Vec3f towards_light;
+
+  bool operator==(const BackgroundKey& other) const {
+    auto same = [](const Colour& a, const Colour& b) { return a.r == b.r && a.g == b.g && a.b == b.b; };
+    return camera.position == other.camera.position && camera.target == other.camera.target &&
+           camera.fov_y_degrees == other.camera.fov_y_degrees && same(background, other.background) &&
+           ground == other.ground && ground_height == other.ground_height && towards_light == other.towards_light;
+  }
+};
+
 // Where the multisamples of a pixel lie, relative to its centre, as the impostor shader needs.
 std::vector<float> sample_offsets(const OffscreenTarget& target) {
   std::vector<float> offsets;
@@ -70,9 +87,11 @@ struct Renderer::Gpu {
   // Declared first: destroyed last, after every GL object below.
   GlContext context;
   RendererSettings settings;
-  ShaderProgram lit{"lit", shaders::lit_vertex(), shaders::lit_fragment()};
-  ShaderProgram impostor{"impostor", shaders::impostor_vertex(), shaders::impostor_fragment()};
-  ShaderProgram ground{"ground", shaders::ground_vertex(), shaders::ground_fragment()};
+  bool shadow_map_on = settings.shadows == ShadowMethod::shadow_map && settings.shadow_map_size > 0;
+  ShaderProgram lit{"lit", shaders::lit_vertex(), shaders::lit_fragment(shadow_map_on)};
+  ShaderProgram impostor{"impostor", shaders::impostor_vertex(), shaders::impostor_fragment(shadow_map_on)};
+  ShaderProgram ground{"ground", shaders::ground_vertex(), shaders::ground_fragment(shadow_map_on, false)};
+  ShaderProgram ground_shadow{"ground shadow", shaders::ground_shadow_vertex(), shaders::ground_fragment(false, true)};
   ShaderProgram depth_only{"shadow", shaders::shadow_vertex(), ""};
   ShaderProgram impostor_shadow{"impostor shadow", shaders::impostor_shadow_vertex(),
                                 shaders::impostor_shadow_fragment()};
@@ -80,29 +99,39 @@ struct Renderer::Gpu {
   ShaderProgram flat{"flat", shaders::flat_vertex(), shaders::flat_fragment()};
   FlatMesh arrow_mesh;
   GpuMesh cube_mesh{make_cube()};
+  GpuMesh shadow_discs{make_quad()};  // each around a sphere's great disc (ground_shadow.h)
   GpuMesh sphere_quads{make_quad()};
   GpuMesh point_quads{make_quad()};
   GpuMesh ground_mesh{make_quad()};
   OffscreenTarget target;
   std::optional<ShadowMap> shadow_map;
+  // Sky and ground depend only on the camera and the light unless the shadow map falls on the
+  // ground: then they are kept here and copied in (cheaper than clearing), redrawn on a change.
+  std::optional<OffscreenTarget> background;
+  std::optional<BackgroundKey> background_key;
 
   // Scratch, kept to reuse their memory from frame to frame.
   std::array<std::vector<Instance>, kMaxSphereLevel + 1> spheres_by_level;
-  std::vector<Instance> spheres, boxes, points;
+  std::vector<Instance> spheres, boxes, points, discs;
   std::vector<FlatVertex> arrows;
 
   Gpu(int width, int height, const RendererSettings& renderer_settings)
       : settings(renderer_settings), target(width, height, renderer_settings.samples) {
-    if (settings.shadow_map_size > 0) shadow_map.emplace(settings.shadow_map_size);
-    ground_mesh.upload({Instance{}});  // the ground shader places the quad itself
-    for (const ShaderProgram* program : {&lit, &impostor, &ground}) {
-      program->set("u_shadow_map", static_cast<int>(kShadowTextureUnit));
+    if (!shadow_map_on) background.emplace(width, height, settings.samples);
+    if (shadow_map_on) {
+      shadow_map.emplace(settings.shadow_map_size);
+      for (const ShaderProgram* program : {&lit, &impostor, &ground}) {
+        program->set("u_shadow_map", static_cast<int>(kShadowTextureUnit));
+      }
     }
+    ground_mesh.upload({Instance{}});  // the ground shader places the quad itself
     const std::vector<float> offsets = sample_offsets(target);
-    impostor.use();
-    glUniform2fv(glGetUniformLocation(impostor.id(), "u_sample_offsets"), static_cast<GLsizei>(offsets.size() / 2),
-                 offsets.data());
-    impostor.set("u_sample_count", static_cast<int>(offsets.size() / 2));
+    for (const ShaderProgram* program : {&impostor, &ground_shadow}) {
+      program->use();
+      glUniform2fv(glGetUniformLocation(program->id(), "u_sample_offsets"), static_cast<GLsizei>(offsets.size() / 2),
+                   offsets.data());
+      program->set("u_sample_count", static_cast<int>(offsets.size() / 2));
+    }
     throw_on_gl_error("setup");
   }
   ~Gpu() {
@@ -112,23 +141,29 @@ struct Renderer::Gpu {
     }
   }
 
-  void collect(const DrawList& draw_list, const CameraView& camera);
+  void collect(const DrawList& draw_list, const CameraView& camera, const Vec3f& towards_light);
   void draw_shadows(const ShadowFrustum& shadow, const Vec3f& towards_light);
   void draw_bodies();
   void draw_marks();  // arrows and points
   void draw_ground(const DrawList& draw_list, const CameraView& camera);
+  void clear(const Colour& background) const;
+  void prepare_background(const DrawList& draw_list, const CameraView& camera, const Vec3f& towards_light);
+  void draw_ground_shadows(const DrawList& draw_list);
 };
 
 // Sorts every item into the instance lists of the meshes that draw it, and uploads them.
-void Renderer::Gpu::collect(const DrawList& draw_list, const CameraView& camera) {
+void Renderer::Gpu::collect(const DrawList& draw_list, const CameraView& camera, const Vec3f& towards_light) {
   for (auto& list : spheres_by_level) list.clear();
   spheres.clear();
   boxes.clear();
   points.clear();
   arrows.clear();
+  discs.clear();
 
+  const bool ground_shadows = settings.shadows == ShadowMethod::ground && draw_list.ground;
   for (const SphereItem& sphere : draw_list.spheres) {
     spheres.push_back(sphere_instance(sphere));
+    if (ground_shadows) discs.push_back(ground_shadow_disc(sphere, towards_light));
     if (settings.spheres == SphereMethod::tessellated) {
       const float radius_pixels = sphere.radius * camera.pixels_per_metre(sphere.centre);
       spheres_by_level[sphere_level(radius_pixels, kOutlineTolerancePixels)].push_back(spheres.back());
@@ -147,6 +182,7 @@ void Renderer::Gpu::collect(const DrawList& draw_list, const CameraView& camera)
   cube_mesh.upload(boxes);
   arrow_mesh.upload(arrows);
   point_quads.upload(points);
+  shadow_discs.upload(discs);
 }
 
 // Depth of spheres (always ray-cast: exact and cheap) and boxes as the light sees them.
@@ -208,15 +244,58 @@ void Renderer::Gpu::draw_marks() {
 
 void Renderer::Gpu::draw_ground(const DrawList& draw_list, const CameraView& camera) {
   const Vec3f centre(draw_list.camera.target.x(), draw_list.ground_height, draw_list.camera.target.z());
+  for (const ShaderProgram* program : {&ground, &ground_shadow}) {
+    program->set("u_background", to_vector(draw_list.background));
+    program->set("u_ground_colour", kGroundColour);
+    program->set("u_fog_start", 2.5f * camera.distance_to_target);
+    program->set("u_fog_end", 0.25f * camera.far_distance);
+  }
   ground.use();
   ground.set("u_ground_centre", centre);
   ground.set("u_ground_half_size", 0.7f * camera.far_distance);
-  ground.set("u_background", to_vector(draw_list.background));
-  ground.set("u_ground_colour", kGroundColour);
-  ground.set("u_fog_start", 2.5f * camera.distance_to_target);
-  ground.set("u_fog_end", 0.25f * camera.far_distance);
   glDisable(GL_CULL_FACE);  // visible from below too
   ground_mesh.draw();
+}
+
+void Renderer::Gpu::clear(const Colour& colour) const {
+  glClearColor(colour.r, colour.g, colour.b, 1.0f);
+  glClearDepth(1.0);
+  glDepthMask(GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+// Starts the frame from the kept sky and ground, drawing them first if anything they depend on
+// changed (the camera moved, say).
+void Renderer::Gpu::prepare_background(const DrawList& draw_list, const CameraView& camera,
+                                       const Vec3f& towards_light) {
+  const BackgroundKey key{draw_list.camera, draw_list.background, draw_list.ground, draw_list.ground_height,
+                          towards_light};
+  if (!background_key || !(*background_key == key)) {
+    background->bind_for_drawing();
+    clear(draw_list.background);
+    if (draw_list.ground) draw_ground(draw_list, camera);
+    background_key = key;
+  }
+  background->copy_samples_to(target);
+}
+
+// After the ground: the shadow geometry, nudged towards the eye so it wins against the ground's
+// depth, and hidden wherever a body is in front. Seen from below the ground, nothing is drawn.
+void Renderer::Gpu::draw_ground_shadows(const DrawList& draw_list) {
+  ground_shadow.use();
+  ground_shadow.set("u_ground_height", draw_list.ground_height);
+  // Slid onto the ground, the faces that face the light keep their winding seen from above and
+  // the others turn over: culling draws each shadow pixel once (the lit faces tile the shadow).
+  glEnable(GL_CULL_FACE);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(-1.0f, -4.0f);
+  ground_shadow.set("u_disc", 1);
+  shadow_discs.draw();
+  ground_shadow.set("u_disc", 0);
+  cube_mesh.draw();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDepthMask(GL_TRUE);
 }
 
 Renderer::Renderer(int width, int height, RendererSettings settings)
@@ -242,7 +321,7 @@ void Renderer::draw_into(const DrawList& draw_list, Frame& frame) {
   const Vec3f towards_light = std::isfinite(light_length) && light_length > 1e-6f
                                   ? Vec3f(draw_list.towards_light / light_length)
                                   : Vec3f(DrawList{}.towards_light.normalized());
-  gpu.collect(draw_list, camera);
+  gpu.collect(draw_list, camera, towards_light);
 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -253,13 +332,8 @@ void Renderer::draw_into(const DrawList& draw_list, Frame& frame) {
   if (gpu.shadow_map) shadow = fit_shadow_frustum(draw_list, towards_light, gpu.shadow_map->size());
   if (shadow.has_casters) gpu.draw_shadows(shadow, towards_light);
 
-  gpu.target.bind_for_drawing();
-  const Colour& background = draw_list.background;
-  glClearColor(background.r, background.g, background.b, 1.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   gpu.flat.set("u_view_projection", camera.view_projection);
-  for (const ShaderProgram* program : {&gpu.lit, &gpu.impostor, &gpu.ground}) {
+  for (const ShaderProgram* program : {&gpu.lit, &gpu.impostor, &gpu.ground, &gpu.ground_shadow}) {
     program->set("u_view_projection", camera.view_projection);
     program->set("u_light_direction", towards_light);
     program->set("u_camera_position", draw_list.camera.position);
@@ -267,9 +341,19 @@ void Renderer::draw_into(const DrawList& draw_list, Frame& frame) {
     program->set("u_shadows_enabled", shadow.has_casters ? 1 : 0);
     program->set("u_shadow_texel_world", shadow.texel_world);
   }
-  // Bodies first, then the ground: the depth test skips the ground's pixels that bodies hide.
-  gpu.draw_bodies();
-  if (draw_list.ground) gpu.draw_ground(draw_list, camera);
+  if (gpu.background) {
+    gpu.prepare_background(draw_list, camera, towards_light);
+    gpu.target.bind_for_drawing();
+    gpu.draw_bodies();
+  } else {
+    // The shadow map falls on the ground: draw it every frame, after the bodies so that the depth
+    // test skips the pixels they hide.
+    gpu.target.bind_for_drawing();
+    gpu.clear(draw_list.background);
+    gpu.draw_bodies();
+    if (draw_list.ground) gpu.draw_ground(draw_list, camera);
+  }
+  if (draw_list.ground && gpu.settings.shadows == ShadowMethod::ground) gpu.draw_ground_shadows(draw_list);
   gpu.draw_marks();
 
   gpu.target.resolve_into(frame);

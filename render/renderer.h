@@ -16,9 +16,17 @@ enum class SphereMethod {
   tessellated,  // an icosphere per sphere, subdivided by its size on screen
 };
 
+// Where shadows fall. Both come from the one directional light.
+enum class ShadowMethod {
+  ground,      // on the ground only, drawn as geometry: cheap, and what makes heights read
+  shadow_map,  // on everything, from a depth map the light sees (costs a pass and a lookup a pixel)
+  none,
+};
+
 struct RendererSettings {
   int samples = 4;              // multisample anti-aliasing; 0 turns it off
-  int shadow_map_size = 2048;   // 0 turns shadows off
+  ShadowMethod shadows = ShadowMethod::ground;
+  int shadow_map_size = 2048;   // texels a side, for ShadowMethod::shadow_map
   SphereMethod spheres = SphereMethod::impostor;
 };
 

@@ -10,13 +10,15 @@ constexpr const char* kVersion = "#version 450 core\n";
 constexpr const char* kLighting = R"(
 uniform vec3 u_light_direction;      // unit vector towards the light
 uniform vec3 u_camera_position;
+
+vec3 to_linear(vec3 srgb) { return srgb * srgb; }  // gamma 2, close to sRGB and cheap on llvmpipe
+vec3 to_display(vec3 linear) { return sqrt(clamp(linear, 0.0, 1.0)); }
+
+#ifdef SHADOW_MAP
 uniform mat4 u_light_view_projection;
 uniform sampler2DShadow u_shadow_map;
 uniform int u_shadows_enabled;
 uniform float u_shadow_texel_world; // size of one shadow-map texel in metres
-
-vec3 to_linear(vec3 srgb) { return srgb * srgb; }  // gamma 2, close to sRGB and cheap on llvmpipe
-vec3 to_display(vec3 linear) { return sqrt(clamp(linear, 0.0, 1.0)); }
 
 // 1 = fully lit, 0 = in shadow. Normal offset plus a small depth bias avoid acne; the hardware
 // 2x2 filter of a linear shadow sampler softens the edge.
@@ -31,6 +33,10 @@ float light_visibility(vec3 world, vec3 normal) {
   float reference = min(coords.z, 1.0) - 0.0005;
   return texture(u_shadow_map, vec3(coords.xy, reference));  // GL_LINEAR: a 2x2 percentage-closer filter
 }
+#else
+// Without a shadow map only the ground receives shadows (drawn as geometry, see ground_shadow.h).
+float light_visibility(vec3 world, vec3 normal) { return 1.0; }
+#endif
 
 // Hemisphere ambient + Lambert + a little Blinn-Phong, in linear light.
 vec3 shade(vec3 albedo, vec3 world, vec3 normal, float specular_strength) {
@@ -125,8 +131,8 @@ void main() {
 )";
 }
 
-std::string lit_fragment() {
-  return std::string(kVersion) + kLighting + kSurface + R"(
+std::string lit_fragment(bool shadow_map) {
+  return std::string(kVersion) + (shadow_map ? "#define SHADOW_MAP 1\n" : "") + kLighting + kSurface + R"(
 in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_local;
@@ -159,7 +165,11 @@ uniform vec3 u_camera_position;
 out vec3 v_world;
 flat out vec3 v_centre;
 flat out float v_radius;
-flat out mat3 v_to_local;
+// Three vectors, not a flat mat3: a flat matrix output corrupts llvmpipe's heap (Mesa 22.3) when
+// LP_NATIVE_VECTOR_WIDTH=128, as the golden images run it.
+flat out vec3 v_to_local_0;
+flat out vec3 v_to_local_1;
+flat out vec3 v_to_local_2;
 flat out vec3 v_colour;
 flat out int v_style;
 
@@ -177,7 +187,10 @@ void main() {
   v_world = centre + (right * in_position.x + up * in_position.z) * half_size;
   v_centre = centre;
   v_radius = radius;
-  v_to_local = transpose(mat3(in_model)) / (radius * radius);  // R^T, from R * radius
+  mat3 to_local = transpose(mat3(in_model)) / (radius * radius);  // R^T, from R * radius
+  v_to_local_0 = to_local[0];
+  v_to_local_1 = to_local[1];
+  v_to_local_2 = to_local[2];
   v_colour = in_colour;
   v_style = int(in_style + 0.5);
   gl_Position = u_view_projection * vec4(v_world, 1.0);
@@ -185,12 +198,14 @@ void main() {
 )";
 }
 
-std::string impostor_fragment() {
-  return std::string(kVersion) + kLighting + kSurface + R"(
+std::string impostor_fragment(bool shadow_map) {
+  return std::string(kVersion) + (shadow_map ? "#define SHADOW_MAP 1\n" : "") + kLighting + kSurface + R"(
 in vec3 v_world;
 flat in vec3 v_centre;
 flat in float v_radius;
-flat in mat3 v_to_local;
+flat in vec3 v_to_local_0;
+flat in vec3 v_to_local_1;
+flat in vec3 v_to_local_2;
 flat in vec3 v_colour;
 flat in int v_style;
 
@@ -205,28 +220,36 @@ void main() {
   vec3 eye_to_centre = v_centre - u_camera_position;
   float centre_distance_squared = dot(eye_to_centre, eye_to_centre);
   float radius_squared = v_radius * v_radius;
-  // Coverage: one ray per sample, through the quad's plane (linear, so derivatives are exact).
-  vec3 step_x = dFdx(v_world);
-  vec3 step_y = dFdy(v_world);
-  int mask = 0;
-  for (int i = 0; i < u_sample_count; ++i) {
-    vec3 direction = normalize(v_world + step_x * u_sample_offsets[i].x + step_y * u_sample_offsets[i].y - u_camera_position);
-    float along = dot(eye_to_centre, direction);
-    if (along * along - centre_distance_squared + radius_squared >= 0.0) mask |= 1 << i;
+  // The pixel centre's ray: how far inside the outline it passes (the discriminant).
+  vec3 direction = normalize(v_world - u_camera_position);
+  float along = dot(eye_to_centre, direction);
+  float inside = along * along - centre_distance_squared + radius_squared;
+  float per_pixel = fwidth(inside);
+  if (inside < -1.5 * per_pixel) discard;
+  gl_SampleMask[0] = -1;  // well inside: every sample (a shader that writes the mask must always)
+  if (inside < 1.5 * per_pixel) {
+    // Near the outline: one ray per sample, through the quad's plane (linear, so derivatives
+    // are exact).
+    vec3 step_x = dFdx(v_world);
+    vec3 step_y = dFdy(v_world);
+    int mask = 0;
+    for (int i = 0; i < u_sample_count; ++i) {
+      vec3 sample_direction = normalize(v_world + step_x * u_sample_offsets[i].x + step_y * u_sample_offsets[i].y - u_camera_position);
+      float sample_along = dot(eye_to_centre, sample_direction);
+      if (sample_along * sample_along - centre_distance_squared + radius_squared >= 0.0) mask |= 1 << i;
+    }
+    if (mask == 0) discard;
+    gl_SampleMask[0] = mask;
   }
-  if (mask == 0) discard;
-  gl_SampleMask[0] = mask;
 
   // Shade where the pixel centre's ray meets the sphere (on a partly covered pixel whose centre
   // misses, the nearest point of the outline).
-  vec3 direction = normalize(v_world - u_camera_position);
-  float along = dot(eye_to_centre, direction);
-  float discriminant = max(along * along - centre_distance_squared + radius_squared, 0.0);
+  float discriminant = max(inside, 0.0);
   vec3 hit = u_camera_position + direction * (along - sqrt(discriminant));
   vec3 normal = normalize(hit - v_centre);
   vec4 clip = u_view_projection * vec4(hit, 1.0);
   gl_FragDepth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
-  out_colour = surface_colour(v_colour, v_style, v_to_local * (hit - v_centre), hit, normal);
+  out_colour = surface_colour(v_colour, v_style, mat3(v_to_local_0, v_to_local_1, v_to_local_2) * (hit - v_centre), hit, normal);
 }
 )";
 }
@@ -270,8 +293,9 @@ void main() {
 )";
 }
 
-std::string ground_fragment() {
-  return std::string(kVersion) + kLighting + R"(
+std::string ground_fragment(bool shadow_map, bool in_shadow) {
+  return std::string(kVersion) + (shadow_map ? "#define SHADOW_MAP 1\n" : "") +
+         (in_shadow ? "#define IN_SHADOW 1\n" : "") + kLighting + R"(
 in vec3 v_world;
 
 uniform vec3 u_background;  // sRGB
@@ -291,16 +315,74 @@ float grid_line(vec2 coord, float spacing) {
   return line * fade;
 }
 
+#ifdef IN_SHADOW
+in vec2 v_disc;
+uniform int u_disc;                 // 1: keep the samples inside the disc of the quad
+uniform vec2 u_sample_offsets[16];  // multisample positions relative to the pixel centre
+uniform int u_sample_count;
+#endif
+
 void main() {
-  vec3 normal = vec3(0.0, 1.0, 0.0);
+#ifdef IN_SHADOW
+  gl_SampleMask[0] = -1;  // every sample, unless the disc says otherwise (a shader that writes the mask must always)
+  if (u_disc != 0) {
+    // Per multisample, as the impostors: a quad is two large triangles, where a fan of thin ones
+    // would cost llvmpipe far more.
+    vec2 step_x = dFdx(v_disc), step_y = dFdy(v_disc);
+    float reach = length(abs(step_x) + abs(step_y));  // about a pixel, in disc units
+    float radius = length(v_disc);
+    if (radius > 1.0 + reach) discard;
+    if (radius > 1.0 - reach) {  // near the edge: test each sample
+      int mask = 0;
+      for (int i = 0; i < u_sample_count; ++i) {
+        vec2 p = v_disc + step_x * u_sample_offsets[i].x + step_y * u_sample_offsets[i].y;
+        if (dot(p, p) <= 1.0) mask |= 1 << i;
+      }
+      if (mask == 0) discard;
+      gl_SampleMask[0] = mask;
+    }
+  }
+#endif
   float minor = grid_line(v_world.xz, 1.0);
   float major = grid_line(v_world.xz, 5.0);
   float darken = max(minor * 0.06, major * 0.12);
   vec3 albedo = to_linear(u_ground_colour * (1.0 - darken));
-  vec3 lit = shade(albedo, v_world, normal, 0.0);
+  // The ground is flat and rough: ambient from the sky plus the sun, where it reaches.
+  float sun = max(u_light_direction.y, 0.0) * 0.82;
+#ifdef IN_SHADOW
+  float visibility = 0.0;
+#else
+  float visibility = light_visibility(v_world, vec3(0.0, 1.0, 0.0));
+#endif
+  vec3 lit = albedo * (vec3(0.38, 0.40, 0.44) + vec3(1.0, 0.98, 0.94) * sun * visibility);
   float distance_to_eye = length(v_world - u_camera_position);
   float fog = smoothstep(u_fog_start, u_fog_end, distance_to_eye);
   out_colour = vec4(mix(to_display(lit), u_background, fog), 1.0);
+}
+)";
+}
+
+// Shadows cast on the ground by geometry: each vertex slides along the light onto the plane
+// y = u_ground_height (a sphere's great disc, as the quad around it, or a box's own vertices).
+std::string ground_shadow_vertex() {
+  return std::string(kVersion) + R"(
+layout(location = 0) in vec3 in_position;
+layout(location = 2) in mat4 in_model;
+
+uniform mat4 u_view_projection;
+uniform vec3 u_light_direction;
+uniform float u_ground_height;
+
+out vec3 v_world;
+out vec2 v_disc;  // a disc's quad: the disc is where |v_disc| <= 1 (projection keeps this linear)
+
+void main() {
+  v_disc = in_position.xz;
+  vec3 world = (in_model * vec4(in_position, 1.0)).xyz;
+  world -= u_light_direction * (max(world.y - u_ground_height, 0.0) / max(u_light_direction.y, 0.05));
+  world.y = u_ground_height;
+  v_world = world;
+  gl_Position = u_view_projection * vec4(world, 1.0);
 }
 )";
 }

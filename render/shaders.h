@@ -9,14 +9,17 @@
 
 namespace impulse::render::shaders {
 
-std::string lit_vertex();       // tessellated spheres, boxes, arrows
-std::string lit_fragment();
+// `shadow_map`: the fragment stages look up the shadow map (else only the ground gets shadows,
+// drawn by ground_shadow_vertex + ground_fragment(false, true)).
+std::string lit_vertex();       // tessellated spheres, boxes
+std::string lit_fragment(bool shadow_map);
 std::string impostor_vertex();  // spheres as ray-cast quads (the unit quad of make_quad)
-std::string impostor_fragment();
+std::string impostor_fragment(bool shadow_map);
 std::string flat_vertex();      // flat-coloured triangles (arrows): 0 position, 1 colour
 std::string flat_fragment();
 std::string ground_vertex();    // one quad, placed by uniforms
-std::string ground_fragment();
+std::string ground_fragment(bool shadow_map, bool in_shadow);  // in_shadow: as if the sun were hidden
+std::string ground_shadow_vertex();  // discs under spheres and boxes, slid along the light onto the ground
 std::string shadow_vertex();    // depth only; no fragment stage
 std::string impostor_shadow_vertex();  // sphere impostors into the shadow map
 std::string impostor_shadow_fragment();

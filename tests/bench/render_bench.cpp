@@ -1,0 +1,163 @@
+// render_bench: how fast a frame of 300 spheres, 100 boxes and 400 arrows (with a lecture
+// overlay) goes from a draw list to an MP4, phase by phase, against the naive peer (a PNG file
+// per frame, then the ffmpeg program). Prints one table; README.md, "Speed", records its figures.
+//
+//   render_bench                   1280x720, 90 frames a phase, and peak memory of 10 s and 60 s videos
+//   render_bench --frames 300      more frames per phase
+//   render_bench --no-memory       skip the 10 s / 60 s memory runs (they take a few minutes)
+//   render_bench --smoke           320x240, a few frames: checks that everything runs (for ctest)
+//
+// Machines are shared and noisy: only figures from one run compare; the table says what else was
+// running (load average) and how many threads llvmpipe used.
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/bench/render_phases.h"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using namespace impulse;
+
+namespace {
+
+struct Options {
+  int frames = 90;
+  bool smoke = false;
+  bool memory = true;
+  int child_seconds = 0;  // internal: render a video this long and exit (a memory run)
+  std::string work = (fs::temp_directory_path() / "impulse_render_bench").string();
+};
+
+std::string load_average() {
+  std::ifstream file("/proc/loadavg");
+  std::string one, five, fifteen;
+  file >> one >> five >> fifteen;
+  return one + " " + five + " " + fifteen;
+}
+
+const char* env_or(const char* name, const char* fallback) {
+  const char* value = std::getenv(name);
+  return value ? value : fallback;
+}
+
+void row(const char* what, const bench::Timing& timing) {
+  std::printf("| %-44s | %8.1f | %8.1f | %8.1f |\n", what, timing.frames_per_second(),
+              1000.0 * timing.wall_seconds / timing.frames, 1000.0 * timing.cpu_seconds / timing.frames);
+  std::fflush(stdout);
+}
+
+// Peak resident memory (MiB) of this program rendering a `seconds` long video end to end, in a
+// child process of its own so that each figure is its own peak.
+double peak_memory_of_video(const char* self, int seconds, const std::string& work) {
+  const std::string seconds_text = std::to_string(seconds);
+  std::vector<char*> argv = {const_cast<char*>(self), const_cast<char*>("--child-video"),
+                             const_cast<char*>(seconds_text.c_str()), const_cast<char*>("--work"),
+                             const_cast<char*>(work.c_str()), nullptr};
+  pid_t child = 0;
+  if (posix_spawn(&child, self, nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  int status = 0;
+  rusage usage{};
+  wait4(child, &status, 0, &usage);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return -1;
+  return double(usage.ru_maxrss) / 1024.0;
+}
+
+Options parse(int argc, char** argv) {
+  Options options;
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (argument == "--frames" && has_value) options.frames = std::max(1, std::atoi(argv[++i]));
+    else if (argument == "--smoke") options.smoke = true;
+    else if (argument == "--no-memory") options.memory = false;
+    else if (argument == "--child-video" && has_value) options.child_seconds = std::atoi(argv[++i]);
+    else if (argument == "--work" && has_value) options.work = argv[++i];
+    else {
+      std::fprintf(stderr, "render_bench: unknown argument '%s' (see the top of tests/bench/render_bench.cpp)\n",
+                   argument.c_str());
+      std::exit(2);
+    }
+  }
+  if (options.smoke) {
+    options.frames = 6;
+    options.memory = false;
+  }
+  return options;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options options = parse(argc, argv);
+  bench::BenchSettings settings;
+  if (options.smoke) {
+    settings.width = 320;
+    settings.height = 240;
+  }
+  fs::create_directories(options.work);
+  const std::string video = (fs::path(options.work) / "bench.mp4").string();
+  try {
+    if (options.child_seconds > 0) {
+      bench::time_end_to_end(settings, options.child_seconds * settings.fps, video);
+      return 0;
+    }
+    const int frames = options.frames;
+    std::printf("render_bench: %dx%d, %d frames per phase, 300 spheres + 100 boxes + 400 arrows + overlay\n",
+                settings.width, settings.height, frames);
+    std::printf("machine: %u cores; LP_NUM_THREADS=%s LP_NATIVE_VECTOR_WIDTH=%s; load average at start %s\n",
+                std::thread::hardware_concurrency(), env_or("LP_NUM_THREADS", "(all cores)"),
+                env_or("LP_NATIVE_VECTOR_WIDTH", "(native)"), load_average().c_str());
+    std::printf("\n| %-44s | %8s | %8s | %8s |\n", "phase", "frames/s", "ms/frame", "cpu ms");
+    std::printf("|%s|%s|%s|%s|\n", std::string(46, '-').c_str(), std::string(10, '-').c_str(),
+                std::string(10, '-').c_str(), std::string(10, '-').c_str());
+
+    bench::BenchSettings tessellated = settings, single = settings;
+    tessellated.renderer.spheres = render::SphereMethod::tessellated;
+    single.renderer.samples = 0;
+    row("draw, 4x MSAA, sphere impostors (default)", bench::time_drawing(settings, frames));
+    row("draw, 4x MSAA, tessellated spheres", bench::time_drawing(tessellated, frames));
+    row("draw, no anti-aliasing (for reference)", bench::time_drawing(single, frames));
+    row("overlay (cairo) onto the frame", bench::time_overlay(settings, frames));
+    row("encode (RGBA -> yuv420p, libx264 veryfast)", bench::time_encoding(settings, frames, video));
+    const bench::Timing ours = bench::time_end_to_end(settings, frames, video);
+    row("end to end to MP4 (impulse)", ours);
+    bench::Timing naive;
+    bool have_naive = true;
+    try {
+      naive = bench::time_naive_peer(settings, frames, (fs::path(options.work) / "png").string(),
+                                     (fs::path(options.work) / "naive.mp4").string());
+      row("naive peer: PNG per frame + ffmpeg program", naive);
+    } catch (const std::exception& error) {
+      have_naive = false;
+      std::printf("| %-44s | %8s | %8s | %8s |\n", "naive peer: skipped", "-", "-", "-");
+      std::printf("  (%s)\n", error.what());
+    }
+    if (have_naive && naive.frames_per_second() > 0)
+      std::printf("\nend to end: %.1f frames/s = %.2fx the naive peer (goal: >= 30 frames/s and >= 3x)\n",
+                  ours.frames_per_second(), ours.frames_per_second() / naive.frames_per_second());
+    if (options.memory) {
+      const double ten = peak_memory_of_video(argv[0], 10, options.work);
+      const double sixty = peak_memory_of_video(argv[0], 60, options.work);
+      std::printf("peak memory, end to end: 10 s video %.0f MiB, 60 s video %.0f MiB\n", ten, sixty);
+    }
+    std::printf("load average at end %s\n", load_average().c_str());
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "render_bench: %s\n", error.what());
+    return 1;
+  }
+  fs::remove_all(options.work);
+  return 0;
+}
