@@ -14,6 +14,7 @@ packages=(
   libcairo2-dev fonts-dejavu-core                 # 2D overlays and their font
   libgtest-dev                                    # tests
   libbullet-dev                                   # benchmark peer only
+  ffmpeg                                          # benchmark peer only (render_bench's naive path); impulse never runs it
 )
 
 missing=()
