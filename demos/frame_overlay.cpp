@@ -53,7 +53,8 @@ void FrameOverlay::add_label(const FrameState& state, const render::CameraView& 
         tip = contact.point.cast<float>() + impulse_on(contact, body) * float(scales_.impulse);
       }
     }
-    if (largest <= 0) return;
+    // A touching contact that pushes nothing (0.00 N s) is not worth a label.
+    if (!(largest >= 0.005 && largest > 1e-3 * preview_.largest_impulse)) return;
     text = "J = " + value_text(largest) + " N\u00b7s";
     colour = mark_colour::normal_impulse;
   } else if (kind == "velocity") {

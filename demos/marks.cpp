@@ -1,5 +1,6 @@
 #include "demos/marks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -38,8 +39,19 @@ render::LegendEntry scaled_entry(const std::string& what, const char* unit, rend
 
 }  // namespace
 
-ArrowScales arrow_scales(const DrawOptions& draw, const ScenePreview& preview) {
-  return {auto_scale(draw.impulse_scale, preview.largest_impulse), auto_scale(draw.velocity_scale, preview.largest_speed)};
+ArrowScales arrow_scales(const Scene& scene, const ScenePreview& preview) {
+  const DrawOptions& draw = scene.draw;
+  double smallest = 0.4;  // m, when nothing moves
+  bool found = false;
+  for (const physics::BodyDef& body : scene.bodies) {
+    if (body.is_static || body.shape.type == physics::ShapeType::plane) continue;
+    const double size = body.shape.type == physics::ShapeType::sphere ? body.shape.radius : body.shape.half_extents.minCoeff();
+    smallest = found ? std::min(smallest, size) : size;
+    found = true;
+  }
+  const double normal = draw.normal_length > 0 ? draw.normal_length : std::clamp(1.5 * smallest, 0.05, 1.0);
+  return {auto_scale(draw.impulse_scale, preview.largest_impulse), auto_scale(draw.velocity_scale, preview.largest_speed),
+          normal};
 }
 
 std::vector<render::LegendEntry> legend(const DrawOptions& draw, const ArrowScales& scales,

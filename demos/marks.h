@@ -17,16 +17,19 @@ inline constexpr render::Colour contact_normal{0.84f, 0.37f, 0.00f};    // vermi
 inline constexpr render::Colour normal_impulse{0.00f, 0.45f, 0.70f};    // blue
 inline constexpr render::Colour friction_impulse{0.80f, 0.47f, 0.65f};  // reddish purple
 inline constexpr render::Colour velocity{0.20f, 0.20f, 0.20f};          // near black
+inline constexpr render::Colour joint{0.45f, 0.45f, 0.47f};             // grey: rods, ropes, pivots
 }  // namespace mark_colour
 
 struct ArrowScales {
-  double impulse = 1.0;   // m of arrow per N s
-  double velocity = 1.0;  // m of arrow per m/s
+  double impulse = 1.0;        // m of arrow per N s
+  double velocity = 1.0;       // m of arrow per m/s
+  double normal_length = 0.6;  // m
 };
 
 // The scene's scales, or (for 0) a round number (1, 2 or 5 times a power of ten) that draws the
-// largest value of the preview about 1.5 m long.
-ArrowScales arrow_scales(const DrawOptions& draw, const ScenePreview& preview);
+// largest value of the preview about 1.5 m long; normals (for 0) 1.5 times the smallest moving
+// body's radius or half-size.
+ArrowScales arrow_scales(const Scene& scene, const ScenePreview& preview);
 
 // The legend for the marks the scene draws. Arrow entries show how long a round value (1 N s,
 // 0.5 m/s, ...) is on screen at the camera's target.

@@ -48,14 +48,14 @@ physics::World build_world(const Scene& scene) {
 }
 
 render::DrawList make_draw_list(const Scene& scene, const physics::World& world, const physics::StepRecord& record) {
-  return scene_draw_list(scene, world.bodies(), poses_of(world.bodies()), record.contacts,
-                         arrow_scales(scene.draw, ScenePreview{}), scene.camera);
+  return scene_draw_list(scene, world.bodies(), poses_of(world.bodies()), world.joints(), record.contacts,
+                         arrow_scales(scene, ScenePreview{}), scene.camera);
 }
 
 void render_scene(const Scene& scene, const RenderOptions& options) {
   const render::VideoSettings& video = scene.video;
   const ScenePreview preview = preview_scene(scene);
-  const ArrowScales scales = arrow_scales(scene.draw, preview);
+  const ArrowScales scales = arrow_scales(scene, preview);
   const PlaybackTimeline timeline(scene.playback, preview.impact_times, scene.duration, video.fps);
 
   physics::World world = build_world(scene);
@@ -108,7 +108,8 @@ void render_scene(const Scene& scene, const RenderOptions& options) {
     state.camera = camera_path.at(time, followed >= 0 ? shown[followed].position : physics::Vec3::Zero());
 
     render::FrameJob& job = pipeline.acquire();
-    renderer.draw_into(scene_draw_list(scene, world.bodies(), shown, *state.contacts, scales, state.camera), job.frame);
+    renderer.draw_into(scene_draw_list(scene, world.bodies(), shown, world.joints(), *state.contacts, scales, state.camera),
+                       job.frame);
     overlay_maker.make(state, plots, job.overlay);
     pipeline.submit();
     progress.update(frames_finished);

@@ -17,6 +17,26 @@ void add_arrow(render::DrawList& list, const render::Vec3f& origin, const render
   if (direction.norm() > 1e-4f) list.arrows.push_back({origin, direction, colour, layer});
 }
 
+// A joint's anchor on `body` (or the fixed world point) where the body's pose puts it.
+render::Vec3f anchor_point(const std::vector<BodyPose>& poses, int body, const physics::Vec3& local) {
+  if (body < 0 || body >= int(poses.size())) return to_float(local);
+  return to_float(poses[body].position + poses[body].orientation * local);
+}
+
+void add_joints(render::DrawList& list, const std::vector<BodyPose>& poses, const std::vector<physics::Joint>& joints) {
+  for (const physics::Joint& joint : joints) {
+    const render::Vec3f a = anchor_point(poses, joint.body_a, joint.local_anchor_a);
+    const render::Vec3f b = anchor_point(poses, joint.body_b, joint.local_anchor_b);
+    if (joint.type == physics::JointType::distance)
+      list.lines.push_back({a, b, mark_colour::joint, joint.rope ? 2.0f : 3.0f});
+    else
+      list.points.push_back({a, mark_colour::joint, 5.0f});
+    // A fixed pivot also shows as a dot, so the viewer sees where the rod hangs from.
+    if (joint.body_a == physics::kWorld && joint.type == physics::JointType::distance)
+      list.points.push_back({a, mark_colour::joint, 4.0f});
+  }
+}
+
 }  // namespace
 
 std::vector<BodyPose> poses_of(const std::vector<physics::Body>& bodies) {
@@ -45,8 +65,9 @@ render::Vec3f impulse_on(const physics::ContactRecord& contact, int body) {
 }
 
 render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::Body>& bodies,
-                                 const std::vector<BodyPose>& poses, const std::vector<physics::ContactRecord>& contacts,
-                                 const ArrowScales& scales, const render::Camera& camera) {
+                                 const std::vector<BodyPose>& poses, const std::vector<physics::Joint>& joints,
+                                 const std::vector<physics::ContactRecord>& contacts, const ArrowScales& scales,
+                                 const render::Camera& camera) {
   const DrawOptions& draw = scene.draw;
   render::DrawList list;
   list.camera = camera;
@@ -77,10 +98,11 @@ render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::
       add_arrow(list, to_float(pose.position), to_float(body.velocity) * float(scales.velocity), mark_colour::velocity, velocity_layer);
   }
 
+  add_joints(list, poses, joints);
   for (const physics::ContactRecord& contact : contacts) {
     const render::Vec3f point = to_float(contact.point);
     if (draw.contact_normals)
-      add_arrow(list, point, to_float(contact.normal) * draw.normal_length, mark_colour::contact_normal, normal_layer);
+      add_arrow(list, point, to_float(contact.normal) * float(scales.normal_length), mark_colour::contact_normal, normal_layer);
     for (int body : {contact.body_a, contact.body_b}) {
       if (!moves(bodies, body)) continue;
       const float sign = body == contact.body_a ? 1.0f : -1.0f;

@@ -23,8 +23,11 @@ void interpolate(const std::vector<BodyPose>& from, const std::vector<BodyPose>&
 // The arrow of the impulse on `body` (a moving body of the contact), from the contact point.
 render::Vec3f impulse_on(const physics::ContactRecord& contact, int body);
 
+// Joints are drawn as grey lines (rods, ropes) and dots (ball and hinge pivots) where the poses
+// put their anchors.
 render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::Body>& bodies,
-                                 const std::vector<BodyPose>& poses, const std::vector<physics::ContactRecord>& contacts,
-                                 const ArrowScales& scales, const render::Camera& camera);
+                                 const std::vector<BodyPose>& poses, const std::vector<physics::Joint>& joints,
+                                 const std::vector<physics::ContactRecord>& contacts, const ArrowScales& scales,
+                                 const render::Camera& camera);
 
 }  // namespace impulse::demos

@@ -22,7 +22,7 @@ class SceneError : public std::runtime_error {
 struct DrawOptions {
   bool contact_points = true;    // a dot at each contact point
   bool contact_normals = true;   // an arrow along each contact's normal while it lasts
-  float normal_length = 0.6f;    // m
+  float normal_length = 0.0f;    // m; 0: 1.5 times the smallest moving body's radius or half-size
   bool impulses = true;          // the normal impulse on each moving body, as an arrow
   bool friction = true;          // the friction (tangential) impulse, as an arrow
   float impulse_scale = 0.0f;    // m of arrow per N s; 0: chosen so the largest impulse is about 1.5 m

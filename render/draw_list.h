@@ -34,6 +34,8 @@ struct BoxItem {
 struct ArrowItem { Vec3f origin; Vec3f direction; Colour colour; int layer = 0; };
 // A dot of a fixed size on screen (e.g. a contact point), whatever its distance.
 struct PointItem { Vec3f position; Colour colour; float radius_pixels = 4.0f; };
+// A straight line of a fixed width on screen (e.g. a rod or rope joint), drawn like an arrow's shaft.
+struct LineItem { Vec3f from; Vec3f to; Colour colour; float width_pixels = 3.0f; };
 
 struct Camera {
   Vec3f position{0.0f, 3.0f, 10.0f};
@@ -53,6 +55,7 @@ struct DrawList {
   std::vector<BoxItem> boxes;
   std::vector<ArrowItem> arrows;
   std::vector<PointItem> points;
+  std::vector<LineItem> lines;
 };
 
 }  // namespace impulse::render

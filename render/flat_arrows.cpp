@@ -54,4 +54,22 @@ void append_flat_arrow(const ArrowItem& arrow, const CameraView& camera, std::ve
   add(triangles, head_base + head_side, c);
 }
 
+void append_flat_line(const LineItem& line, const CameraView& camera, std::vector<FlatVertex>& triangles) {
+  const Vec3f along = line.to - line.from;
+  if (!(along.norm() > 1e-6f) || !line.from.allFinite()) return;
+  const Vec3f middle = line.from + 0.5f * along;
+  const float pixels_per_metre = camera.pixels_per_metre(middle);
+  if (!(pixels_per_metre > 0.0f)) return;
+  Vec3f side = along.cross(camera.position - middle);
+  if (side.squaredNorm() < 1e-12f) side = along.unitOrthogonal();
+  side = side.normalized() * (0.5f * std::max(line.width_pixels, 1.0f) / pixels_per_metre);
+  const Colour& c = line.colour;
+  add(triangles, line.from - side, c);
+  add(triangles, line.to - side, c);
+  add(triangles, line.to + side, c);
+  add(triangles, line.from - side, c);
+  add(triangles, line.to + side, c);
+  add(triangles, line.from + side, c);
+}
+
 }  // namespace impulse::render

@@ -1,4 +1,4 @@
-// Arrows as flat shapes, the way a lecture figure draws them: a shaft quad and a head triangle
+// Arrows (and lines) as flat shapes, the way a lecture figure draws them: a shaft quad and a head triangle
 // lying along the arrow and turned to face the camera. Three triangles per arrow, built on the
 // CPU into one vertex list, so 400 arrows cost one small draw call (llvmpipe pays dearly for
 // many small multisampled triangles, which round 3D arrows would need).
@@ -19,5 +19,8 @@ struct FlatVertex {
 // ones stay slim, and never get thinner on screen than a few pixels (they stay legible far away).
 // Arrows shorter than 1e-5 m, or behind the camera, add nothing.
 void append_flat_arrow(const ArrowItem& arrow, const CameraView& camera, std::vector<FlatVertex>& triangles);
+
+// A line as a camera-facing strip `width_pixels` wide (two triangles).
+void append_flat_line(const LineItem& line, const CameraView& camera, std::vector<FlatVertex>& triangles);
 
 }  // namespace impulse::render

@@ -170,6 +170,7 @@ void Renderer::Gpu::collect(const DrawList& draw_list, const CameraView& camera,
     }
   }
   for (const BoxItem& box : draw_list.boxes) boxes.push_back(box_instance(box));
+  for (const LineItem& line : draw_list.lines) append_flat_line(line, camera, arrows);
   for (const ArrowItem& arrow : draw_list.arrows) append_flat_arrow(arrow, camera, arrows);
   for (const PointItem& point : draw_list.points) {
     const float pixels_per_metre = camera.pixels_per_metre(point.position);
