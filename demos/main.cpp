@@ -23,16 +23,22 @@ namespace {
 struct VideoOverrides {
   std::string quality;  // empty: the scene's
   std::optional<int> width, height, fps, crf;
+  std::string x264_preset;  // empty: the scene's
   int samples = 4;
   std::string spheres = "impostor";
 
   void apply(demos::Scene& scene, demos::RenderOptions& options) const {
     render::VideoSettings& video = scene.video;
-    if (!quality.empty()) video = *demos::quality_preset(quality);
+    if (!quality.empty()) {
+      const std::string scene_preset = video.preset;  // size, rate and CRF come with the quality, not the encoder speed
+      video = *demos::quality_preset(quality);
+      video.preset = scene_preset;
+    }
     if (width) video.width = *width;
     if (height) video.height = *height;
     if (fps) video.fps = *fps;
     if (crf) video.crf = *crf;
+    if (!x264_preset.empty()) video.preset = x264_preset;
     if (video.width % 2 || video.height % 2)
       throw std::invalid_argument("--width and --height must be even (H.264 yuv420p halves the colour planes)");
     options.renderer.samples = samples;
@@ -103,6 +109,10 @@ void add_video_options(CLI::App* command, VideoOverrides& overrides) {
       ->check(CLI::Range(1, 240));
   command->add_option("--crf", overrides.crf, "H.264 constant rate factor: 0 lossless .. 51 worst; 18-23 look clean")
       ->check(CLI::Range(0, 51));
+  command->add_option("--x264-preset", overrides.x264_preset,
+                      "Encoder speed against file size: superfast (default), veryfast (about half the size, "
+                      "slower), ... medium")
+      ->check(CLI::IsMember({"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}));
   command->add_option("--samples", overrides.samples, "Multisample anti-aliasing: 4 (default) or 0 for none")
       ->check(CLI::IsMember({0, 2, 4, 8}));
   command->add_option("--spheres", overrides.spheres,

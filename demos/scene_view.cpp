@@ -84,6 +84,8 @@ void read_video(TableReader& top, Scene& scene) {
   if (v.width % 2 || v.height % 2) r.fail(r.get("width"), "width", "width and height must be even (yuv420p)");
   v.fps = r.integer("fps", v.fps, 1, 240);
   v.crf = r.integer("crf", v.crf, 0, 51);
+  v.preset = r.choice("x264_preset", v.preset,
+                      {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"});
   r.finish();
 }
 

@@ -76,6 +76,7 @@ struct VideoEncoder::State {
     codec->time_base = AVRational{1, settings.fps};
     codec->framerate = AVRational{settings.fps, 1};
     codec->gop_size = 2 * settings.fps;  // a keyframe every 2 s keeps scrubbing responsive
+    codec->thread_count = settings.threads;
     codec->color_primaries = AVCOL_PRI_BT709;
     codec->color_trc = AVCOL_TRC_BT709;
     codec->colorspace = AVCOL_SPC_BT709;

@@ -131,7 +131,8 @@ int main(int argc, char** argv) {
     row("draw, 4x MSAA, tessellated spheres", bench::time_drawing(tessellated, frames));
     row("draw, no anti-aliasing (for reference)", bench::time_drawing(single, frames));
     row("overlay (cairo) onto the frame", bench::time_overlay(settings, frames));
-    row("encode (RGBA -> yuv420p, libx264 veryfast)", bench::time_encoding(settings, frames, video));
+    const std::string encode = "encode (RGBA -> yuv420p, libx264 " + settings.video().preset + ")";
+    row(encode.c_str(), bench::time_encoding(settings, frames, video));
     const bench::Timing ours = bench::time_end_to_end(settings, frames, video);
     row("end to end to MP4 (impulse)", ours);
     bench::Timing naive;
