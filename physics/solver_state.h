@@ -12,6 +12,10 @@ struct BodyState {
   Quat dq = Quat::Identity();          // rotation since the step began
   Real inv_mass = 0;
   Mat3 inv_inertia = Mat3::Zero();     // world space, fixed for the step
+  // For the gyroscopic term, only for bodies whose inertia is not the same about every axis.
+  bool gyroscopic = false;
+  Vec3 inertia_local = Vec3::Zero();   // principal moments (boxes: the local axes)
+  Quat orientation0 = Quat::Identity();  // at step start
 };
 
 // Velocity of A's point at ra relative to B's point at rb: v + w x r for each (eq. 11, corrected).

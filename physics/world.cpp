@@ -126,13 +126,37 @@ void World::load_states() {
     // A sleeping body is not simulated: to the solver it is as good as static.
     s.inv_mass = body.awake ? body.inv_mass : 0;
     s.inv_inertia = body.awake ? body.inv_inertia_world : Mat3::Zero();
+    s.inertia_local = body.inertia_local.diagonal();
+    s.orientation0 = body.orientation;
+    s.gyroscopic = s.inv_mass > 0 && s.inertia_local.maxCoeff() - s.inertia_local.minCoeff() > 1e-9 * s.inertia_local.maxCoeff();
   }
 }
 
 void World::integrate_velocities(Real h) {
   const Vec3 dv = settings_.gravity * h;
-  for (BodyState& s : states_)
-    if (s.inv_mass > 0) s.v += dv;
+  for (BodyState& s : states_) {
+    if (s.inv_mass == 0) continue;
+    s.v += dv;
+    if (s.gyroscopic) s.w = gyroscopic_step(s, h);
+  }
+}
+
+// Torque-free rotation I dw/dt = -w x I w, one implicit Euler step solved by one Newton step in
+// the body frame (Catto, "Numerical methods", GDC 2015): without it a tumbling plank would keep
+// w while its inertia turns, and gain or lose angular momentum.
+Vec3 World::gyroscopic_step(const BodyState& s, Real h) {
+  const Quat orientation = s.dq * s.orientation0;
+  const Vec3 w = orientation.conjugate() * s.w;
+  const Vec3 iw = s.inertia_local.cwiseProduct(w);
+  const Vec3 f = h * w.cross(iw);
+  auto skew = [](const Vec3& r) {
+    Mat3 m;
+    m << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
+    return m;
+  };
+  const Mat3 inertia = s.inertia_local.asDiagonal();
+  const Mat3 jacobian = inertia + h * (skew(w) * inertia - skew(iw));
+  return orientation * Vec3(w - jacobian.partialPivLu().solve(f));
 }
 
 void World::integrate_positions(Real h) {

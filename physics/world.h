@@ -61,6 +61,7 @@ class World {
   void solve_joints(Real h, bool use_bias);
   void load_states();
   void integrate_velocities(Real h);
+  static Vec3 gyroscopic_step(const BodyState& s, Real h);
   void integrate_positions(Real h);
   void store_states();
   void check_finite() const;

@@ -167,3 +167,27 @@ TEST(Stack, DISABLED_LargePyramidOf5050BoxesStandsFiveHundredSteps) {
 
 }  // namespace
 }  // namespace impulse::physics
+
+namespace impulse::physics {
+namespace {
+
+// A plank tumbling freely about a tilted axis keeps its angular momentum (the gyroscopic term)
+// and does not gain energy.
+TEST(Box, FreelyTumblingPlankKeepsItsAngularMomentum) {
+  World world(test::without_gravity());
+  const int plank = test::add_box(world, Vec3::Zero(), Vec3(1.0, 0.1, 0.3), 2.0);
+  world.body(plank).angular_velocity = Vec3(0.3, 4.0, 1.0);  // near the unstable middle axis
+  const Body& b = world.bodies()[plank];
+  const Vec3 start = b.inertia_world() * b.angular_velocity;
+  const Real energy = world.step().kinetic_energy;
+  Real largest_error = 0, highest_energy = energy;
+  for (int i = 0; i < 300; ++i) {
+    highest_energy = std::max(highest_energy, world.step().kinetic_energy);
+    largest_error = std::max(largest_error, (b.inertia_world() * b.angular_velocity - start).norm());
+  }
+  EXPECT_LT(largest_error, 0.01 * start.norm());
+  EXPECT_LE(highest_energy, energy * 1.001);
+}
+
+}  // namespace
+}  // namespace impulse::physics
