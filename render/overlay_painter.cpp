@@ -122,19 +122,20 @@ struct OverlayPainter::Cairo {
   }
   void clear_painted();
 
-  void title(const Overlay& overlay);
+  void title(const Overlay& overlay, double& bottom);
   void clock(const Overlay& overlay, double& bottom);
-  void plots(const Overlay& overlay, double top, double& bottom);
+  void plots(const Overlay& overlay, double top);
   void legend(const Overlay& overlay, double top);
   void labels(const Overlay& overlay);
   void captions(const Overlay& overlay);
   void composite_onto(Frame& frame);
 };
 
-void OverlayPainter::Cairo::title(const Overlay& overlay) {
+void OverlayPainter::Cairo::title(const Overlay& overlay, double& bottom) {
+  const double margin = 20 * scale, pad = 12 * scale, size = 24 * scale;
+  bottom = margin;
   if (overlay.title.empty()) return;
   cairo_t* cr = context.get();
-  const double margin = 20 * scale, pad = 12 * scale, size = 24 * scale;
   set_font(cr, size, true);
   const double width_available = width - 2 * margin - 330 * scale;  // the right column keeps the rest
   const std::vector<std::string> lines = wrap(cr, overlay.title, width_available);
@@ -149,9 +150,11 @@ void OverlayPainter::Cairo::title(const Overlay& overlay) {
     cairo_move_to(cr, margin + pad, margin + pad + line_height * i + size * 0.9);
     cairo_show_text(cr, lines[i].c_str());
   }
+  bottom = margin + content_height + 2 * pad;
 }
 
-// At the right, under the clock and the plots: what each mark means, and its scale.
+// At the left, under the title (the top of a frame is mostly sky): what each mark means, and
+// its scale.
 void OverlayPainter::Cairo::legend(const Overlay& overlay, double top) {
   if (overlay.legend.empty()) return;
   cairo_t* cr = context.get();
@@ -165,7 +168,7 @@ void OverlayPainter::Cairo::legend(const Overlay& overlay, double top) {
   for (const LegendEntry& entry : overlay.legend)
     content_width = std::max(content_width, icon_width + 8 * scale + text_width(cr, entry.text));
   const double content_height = line * overlay.legend.size();
-  const double x = width - margin - content_width - 2 * pad, y = top + gap;
+  const double x = margin, y = top + gap;
   if (y + content_height + 2 * pad > height - margin) return;  // no room left
   panel(cr, x, y, content_width + 2 * pad, content_height + 2 * pad, 8 * scale, 0.85);
   mark(x, y, content_width + 2 * pad, content_height + 2 * pad);
@@ -219,13 +222,12 @@ void OverlayPainter::Cairo::clock(const Overlay& overlay, double& bottom) {
   bottom = margin + content_height + 2 * pad;
 }
 
-void OverlayPainter::Cairo::plots(const Overlay& overlay, double top, double& bottom) {
+void OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
   cairo_t* cr = context.get();
   const double margin = 20 * scale, gap = 10 * scale;
-  const double plot_width = 290 * scale, plot_height = 100 * scale, pad = 10 * scale;
+  const double plot_width = 270 * scale, plot_height = 88 * scale, pad = 9 * scale;
   const double title_size = 13 * scale;
   double y = top + gap;
-  bottom = top;
   for (const Plot& plot : overlay.plots) {
     if (y + plot_height > height - margin) break;  // no room left in the column
     const double x = width - margin - plot_width;
@@ -282,7 +284,6 @@ void OverlayPainter::Cairo::plots(const Overlay& overlay, double top, double& bo
       cairo_arc(cr, to_x(plot.points.back().x()), to_y(plot.points.back().y()), 3.5 * scale, 0, 2 * M_PI);
       cairo_fill(cr);
     }
-    bottom = y + plot_height;
     y += plot_height + gap;
   }
 }
@@ -405,11 +406,11 @@ void OverlayPainter::paint(const Overlay& overlay, Frame& frame) {
   c.clear_painted();
   if (overlay.empty()) return;
 
-  c.title(overlay);
-  double clock_bottom = 0, plots_bottom = 0;
+  double title_bottom = 0, clock_bottom = 0;
+  c.title(overlay, title_bottom);
+  c.legend(overlay, title_bottom);
   c.clock(overlay, clock_bottom);
-  c.plots(overlay, clock_bottom, plots_bottom);
-  c.legend(overlay, plots_bottom);
+  c.plots(overlay, clock_bottom);
   c.labels(overlay);
   c.captions(overlay);
   if (cairo_status(c.context.get()) != CAIRO_STATUS_SUCCESS) {
