@@ -7,8 +7,21 @@
 
 namespace impulse::demos {
 
+namespace {
+
+bool needs_preview(const Scene& scene) {
+  const DrawOptions& draw = scene.draw;
+  const bool auto_impulse = (draw.impulses || draw.friction) && draw.impulse_scale <= 0;
+  const bool auto_velocity = draw.velocities && draw.velocity_scale <= 0;
+  return scene.playback.slow_motion_impulse > 0 || auto_impulse || auto_velocity || !scene.overlay.plots.empty() ||
+         scene.overlay.label == "impulse";  // the label skips impulses negligible beside the largest
+}
+
+}  // namespace
+
 ScenePreview preview_scene(const Scene& scene) {
   ScenePreview preview;
+  if (!needs_preview(scene)) return preview;
   physics::World world = build_world(scene);
   const auto& bodies = world.bodies();
   PlotRecorder plots(scene.overlay.plots, plotted_body(bodies, scene.overlay.plot_body));

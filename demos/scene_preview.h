@@ -16,6 +16,9 @@ struct ScenePreview {
   std::vector<double> plot_maxima;   // one per scene.overlay.plots
 };
 
+// Runs the preview only when the scene needs it (slow motion, an automatic arrow scale for marks
+// it draws, or plots); else returns an empty preview. For heavy scenes the preview doubles the
+// physics' cost.
 ScenePreview preview_scene(const Scene& scene);
 
 }  // namespace impulse::demos
