@@ -42,7 +42,7 @@ int plotted_body(const std::vector<physics::Body>& bodies, const std::string& na
 }
 
 PlotRecorder::PlotRecorder(std::vector<PlotKind> kinds, int body)
-    : kinds_(std::move(kinds)), body_(body), series_(kinds_.size()) {}
+    : kinds_(std::move(kinds)), body_(body), series_(kinds_.size()), maxima_(kinds_.size(), 0.0) {}
 
 void PlotRecorder::add_step(const physics::StepRecord& record, const std::vector<physics::Body>& bodies) {
   for (size_t i = 0; i < kinds_.size(); ++i) {
@@ -52,19 +52,21 @@ void PlotRecorder::add_step(const physics::StepRecord& record, const std::vector
       case PlotKind::momentum: value = record.linear_momentum.norm(); break;
       case PlotKind::speed: value = body_ >= 0 ? bodies[body_].velocity.norm() : 0.0; break;
     }
-    series_[i].push_back(render::Vec2f(float(record.time), float(value)));
+    maxima_[i] = std::max(maxima_[i], value);
+    if (steps_ % stride_ == 0) series_[i].push_back(render::Vec2f(float(record.time), float(value)));
+  }
+  ++steps_;
+  if (!series_.empty() && series_[0].size() >= kMaxPoints) {
+    for (auto& series : series_) {
+      size_t kept = 0;
+      for (size_t j = 0; j < series.size(); j += 2) series[kept++] = series[j];
+      series.resize(kept);
+    }
+    stride_ *= 2;
   }
 }
 
-std::vector<double> PlotRecorder::maxima() const {
-  std::vector<double> maxima;
-  for (const auto& series : series_) {
-    double largest = 0;
-    for (const render::Vec2f& p : series) largest = std::max(largest, double(p.y()));
-    maxima.push_back(largest);
-  }
-  return maxima;
-}
+std::vector<double> PlotRecorder::maxima() const { return maxima_; }
 
 std::vector<render::Plot> PlotRecorder::plots(double duration, const std::vector<double>& maxima,
                                               const std::string& body_name) const {

@@ -1,10 +1,13 @@
-// The series behind the overlay's live plots, one sample per physics step: kinetic energy (J),
-// the magnitude of the total linear momentum (kg m/s) and one body's speed (m/s).
+// The series behind the overlay's live plots: kinetic energy (J), the magnitude of the total
+// linear momentum (kg m/s) and one body's speed (m/s). One sample per physics step until a
+// series holds kMaxPoints; then every other one is dropped and sampling halves, so a long video
+// keeps the same memory (a plot is a few hundred pixels wide anyway). Maxima count every step.
 #pragma once
 #include "demos/view_options.h"
 #include "physics/world.h"
 #include "render/overlay.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace impulse::demos {
@@ -22,9 +25,14 @@ class PlotRecorder {
   std::vector<double> maxima() const;
 
  private:
+  static constexpr size_t kMaxPoints = 2048;
+
   std::vector<PlotKind> kinds_;
   int body_;
   std::vector<std::vector<render::Vec2f>> series_;  // one per kind
+  std::vector<double> maxima_;                      // one per kind
+  int64_t steps_ = 0;
+  int64_t stride_ = 1;  // keep one step in stride_
 };
 
 }  // namespace impulse::demos

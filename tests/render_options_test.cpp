@@ -2,6 +2,7 @@
 // [[caption]] and [playback] tables, their errors, and the timeline and camera they produce.
 #include "demos/camera_path.h"
 #include "demos/playback_timeline.h"
+#include "demos/plot_recorder.h"
 #include "demos/scene_file.h"
 
 #include <gtest/gtest.h>
@@ -167,6 +168,23 @@ TEST(Playback, SlowsAroundImpactsAndEasesBack) {
   // 0.4 s of simulated time at a quarter speed adds about 1.2 s of video.
   EXPECT_GT(timeline.frame_count(), 90 + 36);
   EXPECT_LT(timeline.frame_count(), 90 + 36 + 12);
+}
+
+// A long video keeps its plots' memory: the series thin out, the maximum still counts every step.
+TEST(Plots, SeriesStayBoundedAndKeepTheirMaximum) {
+  PlotRecorder plots({PlotKind::kinetic_energy}, -1);
+  physics::StepRecord record;
+  for (int step = 0; step < 60 * 600; ++step) {  // ten minutes at 60 steps a second
+    record.time = step / 60.0;
+    record.kinetic_energy = step == 12345 ? 99.0 : 1.0;
+    plots.add_step(record, {});
+  }
+  const std::vector<render::Plot> shown = plots.plots(600, plots.maxima(), "");
+  ASSERT_EQ(shown.size(), 1u);
+  EXPECT_LE(shown[0].points.size(), 2048u);
+  EXPECT_GE(shown[0].points.size(), 1024u);
+  EXPECT_NEAR(shown[0].points.back().x(), 600.0, 1.0);
+  EXPECT_DOUBLE_EQ(plots.maxima()[0], 99.0);
 }
 
 }  // namespace
