@@ -1,6 +1,7 @@
 // Runs a scene and films it: world -> steps -> draw list -> frame (+ overlay) -> MP4 (and PNGs).
-// Drawing happens on the calling thread (llvmpipe adds its own threads); the overlay, PNG files
-// and the encoder run on a worker thread, a few frames behind (render/frame_pipeline.h).
+// The simulation runs a couple of frames ahead on a thread of its own (scene_film.h); drawing
+// happens on the calling thread (llvmpipe adds its own threads); the overlay, PNG files and the
+// encoder run on a worker thread, a few frames behind (render/frame_pipeline.h).
 #pragma once
 #include "demos/scene_file.h"
 #include "physics/world.h"
