@@ -2,15 +2,21 @@
 
 #include <algorithm>
 
+#include <unistd.h>
+
 namespace impulse::demos {
 
 ProgressBar::ProgressBar(bool enabled, std::string label, int total_frames, std::FILE* stream)
-    : enabled_(enabled), label_(std::move(label)), total_(std::max(total_frames, 1)), stream_(stream) {}
+    : enabled_(enabled),
+      label_(std::move(label)),
+      total_(std::max(total_frames, 1)),
+      stream_(stream),
+      terminal_(isatty(fileno(stream)) != 0) {}
 
 void ProgressBar::update(int frames_done) {
   if (!enabled_) return;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  if (seconds < 1.0 || seconds - last_draw_ < 0.1) return;  // short renders stay quiet
+  if (seconds < 1.0 || seconds - last_draw_ < (terminal_ ? 0.1 : 5.0)) return;  // short renders stay quiet
   draw(frames_done, seconds);
 }
 
@@ -22,8 +28,8 @@ void ProgressBar::draw(int frames_done, double seconds) {
   const double left = rate > 0 ? (total_ - frames_done) / rate : 0;
   std::string bar(size_t(filled), '#');
   bar.resize(kWidth, '.');
-  std::fprintf(stream_, "\r%s [%s] %d/%d frames  %.1f frames/s  %.0f s left ", label_.c_str(), bar.c_str(), frames_done,
-               total_, rate, left);
+  std::fprintf(stream_, "%s%s [%s] %d/%d frames  %.1f frames/s  %.0f s left%s", terminal_ ? "\r" : "", label_.c_str(),
+               bar.c_str(), frames_done, total_, rate, left, terminal_ ? " " : "\n");
   std::fflush(stream_);
   last_draw_ = seconds;
   drawn_ = true;
@@ -33,7 +39,7 @@ void ProgressBar::finish() {
   if (!enabled_ || !drawn_) return;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   draw(total_, seconds);
-  std::fputc('\n', stream_);
+  if (terminal_) std::fputc('\n', stream_);
   drawn_ = false;
 }
 

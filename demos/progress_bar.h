@@ -1,6 +1,7 @@
 // A progress bar on stderr for renders longer than a second:
 //   bounce.toml [#########...........]  81/180 frames  31.2 frames/s  3 s left
-// Redrawn at most ten times a second on one line; finish() ends the line. Silent when disabled.
+// On a terminal it is redrawn at most ten times a second on one line; into a file or pipe (asked
+// for with --progress) it writes a line every five seconds. finish() ends it. Silent when disabled.
 #pragma once
 #include <chrono>
 #include <cstdio>
@@ -24,6 +25,7 @@ class ProgressBar {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   double last_draw_ = -1.0;
   bool drawn_ = false;
+  bool terminal_ = false;
 };
 
 }  // namespace impulse::demos
