@@ -6,8 +6,7 @@
 namespace impulse::physics {
 
 Real motion_bound(const Body& body, Real dt) {
-  const Real reach = body.shape.type == ShapeType::box ? body.shape.half_extents.norm() : body.shape.radius;
-  return (body.velocity.norm() + body.angular_velocity.norm() * reach) * dt;
+  return (body.velocity.norm() + body.angular_velocity.norm() * bounding_radius(body.shape)) * dt;
 }
 
 void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint8_t>& awake, Real dt,

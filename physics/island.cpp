@@ -6,9 +6,6 @@
 namespace impulse::physics {
 
 namespace {
-Real reach(const Body& body) {
-  return body.shape.type == ShapeType::box ? body.shape.half_extents.norm() : body.shape.radius;
-}
 bool is_dynamic(const Body& body) { return body.inv_mass > 0; }
 }  // namespace
 
@@ -33,7 +30,7 @@ void Islands::update(std::vector<Body>& bodies, const std::vector<Contact>& cont
   // Sleep timers: the fastest point of the body must stay below the tolerance.
   for (Body& body : bodies) {
     if (!is_dynamic(body) || !body.awake) continue;
-    const Real speed = body.velocity.norm() + body.angular_velocity.norm() * reach(body);
+    const Real speed = body.velocity.norm() + body.angular_velocity.norm() * bounding_radius(body.shape);
     body.sleep_time = speed > settings.velocity_tolerance ? 0 : body.sleep_time + dt;
   }
 

@@ -7,12 +7,6 @@ namespace impulse::physics {
 
 namespace {
 
-Mat3 skew(const Vec3& r) {
-  Mat3 m;
-  m << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
-  return m;
-}
-
 // How far each body has moved since the step began, applied to its anchor.
 Vec3 anchor_now(const BodyState& s, const Vec3& anchor) { return s.dp + s.dq * anchor; }
 

@@ -13,6 +13,13 @@ using Quat = Eigen::Quaternion<Real>;
 inline bool is_finite(const Vec3& v) { return v.allFinite(); }
 inline bool is_finite(const Quat& q) { return q.coeffs().allFinite(); }
 
+// The matrix [r]x with [r]x v = r x v.
+inline Mat3 skew(const Vec3& r) {
+  Mat3 m;
+  m << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
+  return m;
+}
+
 // Two unit vectors that with n form an orthonormal basis (Duff et al., "Building an Orthonormal
 // Basis, Revisited"). Used for the two friction directions.
 inline void tangent_basis(const Vec3& n, Vec3& t1, Vec3& t2) {

@@ -36,6 +36,15 @@ Mat3 shape_unit_inertia(const Shape& shape) {
   return Mat3::Zero();
 }
 
+Real bounding_radius(const Shape& shape) {
+  switch (shape.type) {
+    case ShapeType::sphere: return shape.radius;
+    case ShapeType::box: return shape.half_extents.norm();
+    case ShapeType::plane: return 0;
+  }
+  return 0;
+}
+
 std::string shape_problem(const Shape& shape) {
   auto num = [](Real v) { return std::to_string(v); };
   switch (shape.type) {

@@ -34,6 +34,9 @@ inline Vec3 box_corner(const Vec3& half, int index) {
 Real shape_volume(const Shape& shape);
 Mat3 shape_unit_inertia(const Shape& shape);  // multiply by mass
 
+// Distance from the centre to the farthest point of a sphere or a box (0 for a plane).
+Real bounding_radius(const Shape& shape);
+
 // Why a shape is impossible ("radius must be > 0, got -1"), or empty when it is fine.
 std::string shape_problem(const Shape& shape);
 

@@ -149,11 +149,6 @@ Vec3 World::gyroscopic_step(const BodyState& s, Real h) {
   const Vec3 w = orientation.conjugate() * s.w;
   const Vec3 iw = s.inertia_local.cwiseProduct(w);
   const Vec3 f = h * w.cross(iw);
-  auto skew = [](const Vec3& r) {
-    Mat3 m;
-    m << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
-    return m;
-  };
   const Mat3 inertia = s.inertia_local.asDiagonal();
   const Mat3 jacobian = inertia + h * (skew(w) * inertia - skew(iw));
   return orientation * Vec3(w - jacobian.partialPivLu().solve(f));
