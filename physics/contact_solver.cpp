@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace impulse::physics {
 
@@ -47,11 +48,6 @@ void clamp_to_disc(Real& j1, Real& j2, Real limit) {
   if (length <= limit) return;
   j1 *= limit / length;
   j2 *= limit / length;
-}
-
-void apply_twist(BodyState& sa, BodyState& sb, const Vec3& normal, Real impulse) {
-  sa.w += sa.inv_inertia * (impulse * normal);
-  sb.w -= sb.inv_inertia * (impulse * normal);
 }
 
 }  // namespace
@@ -120,6 +116,16 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
     m.tangent_mass1 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent1));
     m.tangent_mass2 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent2));
     m.twist_mass = safe_inverse(first.normal.dot((sa.inv_inertia + sb.inv_inertia) * first.normal));
+    m.ra_cross_t1 = m.centre_a.cross(first.tangent1);
+    m.ra_cross_t2 = m.centre_a.cross(first.tangent2);
+    m.rb_cross_t1 = m.centre_b.cross(first.tangent1);
+    m.rb_cross_t2 = m.centre_b.cross(first.tangent2);
+    m.turn_a1 = sa.inv_inertia * m.ra_cross_t1;
+    m.turn_a2 = sa.inv_inertia * m.ra_cross_t2;
+    m.turn_b1 = sb.inv_inertia * m.rb_cross_t1;
+    m.turn_b2 = sb.inv_inertia * m.rb_cross_t2;
+    m.twist_a = sa.inv_inertia * first.normal;
+    m.twist_b = sb.inv_inertia * first.normal;
     m.twist_radius = 0;
     for (int i = 0; i < m.count; ++i) m.twist_radius += (constraints_[m.first + i].anchor_a - centre).norm() / m.count;
     const Body& body_a = bodies[m.a];
@@ -147,11 +153,12 @@ void ContactSolver::warm_start(std::vector<BodyState>& states) const {
     BodyState& sb = states[m.b];
     for (int i = 0; i < m.count; ++i) {
       const ContactConstraint& c = constraints_[m.first + i];
-      apply_impulse(sa, sb, c.anchor_a, c.anchor_b, c.normal_impulse * c.normal);
+      sa.v += (sa.inv_mass * c.normal_impulse) * c.normal;
+      sa.w += c.normal_impulse * c.angular_a;
+      sb.v -= (sb.inv_mass * c.normal_impulse) * c.normal;
+      sb.w -= c.normal_impulse * c.angular_b;
     }
-    const ContactConstraint& first = constraints_[m.first];
-    apply_impulse(sa, sb, m.centre_a, m.centre_b, m.tangent_impulse1 * first.tangent1 + m.tangent_impulse2 * first.tangent2);
-    apply_twist(sa, sb, first.normal, m.twist_impulse);
+    apply_friction(m, sa, sb, m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse);
   }
 }
 
@@ -171,14 +178,19 @@ void ContactSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_b
 void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
   BodyState& sa = states[m.a];
   BodyState& sb = states[m.b];
+  // The velocities in locals: the rows below then work in registers instead of re-reading the
+  // states after every impulse (which the compiler must assume could alias the constraints).
+  Vec3 va = sa.v, wa = sa.w, vb = sb.v, wb = sb.w;
+  const Real inv_ma = sa.inv_mass, inv_mb = sb.inv_mass;
+  const Vec3 moved = sa.dp - sb.dp;
   // Each point's target, from its separation now (positions do not change during the passes).
-  struct Row { ContactConstraint* c; Real bias, mass_scale, impulse_scale; };
+  struct Row { ContactConstraint* c; Real bias, mass, impulse_scale, impulse; };
   Row rows[kMaxManifoldPoints];
   int row_count = 0;
   for (int i = 0; i < m.count && row_count < kMaxManifoldPoints; ++i) {
     ContactConstraint& c = constraints_[m.first + i];
-    const Real separation = current_separation(c, sa, sb);
-    Row row{&c, 0, 1, 0};
+    const Real separation = (moved + (rotate(sa.dq, c.anchor_a) - rotate(sb.dq, c.anchor_b))).dot(c.normal) + c.adjusted_separation;
+    Row row{&c, 0, c.normal_mass, 0, c.normal_impulse};
     if (separation > 0) {
       // Speculative: may close the gap this sub-step, no further. The relax pass leaves it be:
       // the next solve clamps it anyway, and slowing a body before it touches would lose the
@@ -187,7 +199,7 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
       row.bias = separation * inv_h;
     } else if (use_bias) {
       row.bias = std::max(c.softness.bias_rate * separation, -settings_.max_push_velocity);
-      row.mass_scale = c.softness.mass_scale;
+      row.mass *= c.softness.mass_scale;
       row.impulse_scale = c.softness.impulse_scale;
     }
     rows[row_count++] = row;
@@ -199,19 +211,33 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
   const int passes = row_count == 1 || !use_bias ? 1 : kManifoldIterations;
   for (int pass = 0; pass < passes; ++pass) {
     for (int k = 0; k < row_count; ++k) {
-      const Row& row = rows[k];
-      ContactConstraint& c = *row.c;
-      const Real vn = (sa.v - sb.v).dot(c.normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n);
-      const Real impulse = -c.normal_mass * row.mass_scale * (vn + row.bias) - row.impulse_scale * c.normal_impulse;
-      const Real new_impulse = std::max(c.normal_impulse + impulse, Real(0));
-      const Real applied = new_impulse - c.normal_impulse;
-      c.normal_impulse = new_impulse;
-      sa.v += (sa.inv_mass * applied) * c.normal;
-      sa.w += applied * c.angular_a;
-      sb.v -= (sb.inv_mass * applied) * c.normal;
-      sb.w -= applied * c.angular_b;
+      Row& row = rows[k];
+      const ContactConstraint& c = *row.c;
+      const Real vn = (va - vb).dot(c.normal) + wa.dot(c.ra_cross_n) - wb.dot(c.rb_cross_n);
+      const Real new_impulse = std::max(row.impulse - row.mass * (vn + row.bias) - row.impulse_scale * row.impulse, Real(0));
+      const Real applied = new_impulse - row.impulse;
+      row.impulse = new_impulse;
+      va += (inv_ma * applied) * c.normal;
+      wa += applied * c.angular_a;
+      vb -= (inv_mb * applied) * c.normal;
+      wb -= applied * c.angular_b;
     }
   }
+  for (int k = 0; k < row_count; ++k) rows[k].c->normal_impulse = rows[k].impulse;
+  sa.v = va;
+  sa.w = wa;
+  sb.v = vb;
+  sb.w = wb;
+}
+
+// Tangent impulses j1, j2 at the points' centroid and a twist about the normal: +j on A, -j on B.
+void ContactSolver::apply_friction(const ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real j1, Real j2, Real twist) const {
+  const ContactConstraint& first = constraints_[m.first];
+  const Vec3 linear = j1 * first.tangent1 + j2 * first.tangent2;
+  sa.v += sa.inv_mass * linear;
+  sa.w += j1 * m.turn_a1 + j2 * m.turn_a2 + twist * m.twist_a;
+  sb.v -= sb.inv_mass * linear;
+  sb.w -= j1 * m.turn_b1 + j2 * m.turn_b2 + twist * m.twist_b;
 }
 
 // Coulomb friction at the points' centroid, within the disc of radius mu times their total
@@ -219,30 +245,35 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
 void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum, bool use_bias) {
   const ContactConstraint& first = constraints_[m.first];
   const Real limit = first.friction * normal_sum;
-  const Vec3 dv = relative_velocity(sa, sb, m.centre_a, m.centre_b);
+  const Vec3 dv = sa.v - sb.v;
+  Real v1 = dv.dot(first.tangent1) + sa.w.dot(m.ra_cross_t1) - sb.w.dot(m.rb_cross_t1);
+  Real v2 = dv.dot(first.tangent2) + sa.w.dot(m.ra_cross_t2) - sb.w.dot(m.rb_cross_t2);
   // Static friction also undoes the drift from where the pair first touched, softly, as the
   // normal rows undo penetration; without it tiny slips add up and stacks creep.
-  Vec3 drift = Vec3::Zero();
   Real mass_scale = 1, impulse_scale = 0;
   if (use_bias) {
-    const Vec3 moved = (sa.dp - sb.dp) + (sa.dq * m.centre_a - sb.dq * m.centre_b) - (m.centre_a - m.centre_b);
-    drift = first.softness.bias_rate * (m.drift + moved);
+    const Vec3 moved = (sa.dp - sb.dp) + (rotate(sa.dq, m.centre_a) - rotate(sb.dq, m.centre_b)) - (m.centre_a - m.centre_b);
+    const Vec3 drift = first.softness.bias_rate * (m.drift + moved);
+    v1 += drift.dot(first.tangent1);
+    v2 += drift.dot(first.tangent2);
     mass_scale = first.softness.mass_scale;
     impulse_scale = first.softness.impulse_scale;
   }
   const Real old1 = m.tangent_impulse1, old2 = m.tangent_impulse2;
-  m.tangent_impulse1 += -m.tangent_mass1 * mass_scale * (dv + drift).dot(first.tangent1) - impulse_scale * old1;
-  m.tangent_impulse2 += -m.tangent_mass2 * mass_scale * (dv + drift).dot(first.tangent2) - impulse_scale * old2;
+  m.tangent_impulse1 += -m.tangent_mass1 * mass_scale * v1 - impulse_scale * old1;
+  m.tangent_impulse2 += -m.tangent_mass2 * mass_scale * v2 - impulse_scale * old2;
   const Real wanted = std::sqrt(m.tangent_impulse1 * m.tangent_impulse1 + m.tangent_impulse2 * m.tangent_impulse2);
   clamp_to_disc(m.tangent_impulse1, m.tangent_impulse2, limit);
   if (wanted > limit * 1.0001 + 1e-12) m.slipped = true;
-  apply_impulse(sa, sb, m.centre_a, m.centre_b, (m.tangent_impulse1 - old1) * first.tangent1 + (m.tangent_impulse2 - old2) * first.tangent2);
 
-  if (m.twist_radius == 0) return;
-  const Real old_twist = m.twist_impulse;
-  const Real twist_limit = limit * m.twist_radius;
-  m.twist_impulse = std::clamp(old_twist - m.twist_mass * (sa.w - sb.w).dot(first.normal), -twist_limit, twist_limit);
-  apply_twist(sa, sb, first.normal, m.twist_impulse - old_twist);
+  Real twist = 0;
+  if (m.twist_radius > 0) {
+    const Real old_twist = m.twist_impulse;
+    const Real twist_limit = limit * m.twist_radius;
+    m.twist_impulse = std::clamp(old_twist - m.twist_mass * (sa.w - sb.w).dot(first.normal), -twist_limit, twist_limit);
+    twist = m.twist_impulse - old_twist;
+  }
+  apply_friction(m, sa, sb, m.tangent_impulse1 - old1, m.tangent_impulse2 - old2, twist);
 }
 
 // A collision (restitution) is answered in the sub-step in which the surfaces meet, one pair at a
@@ -273,7 +304,7 @@ bool ContactSolver::bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, 
     hit.index = m.first + i;
     // The hit acts at one world point for both bodies, midway between where their anchors are
     // now, so that it conserves angular momentum exactly (r_a - r_b = x_b - x_a).
-    const Vec3 mean_motion = ((sa.dp + sa.dq * c.anchor_a) + (sb.dp + sb.dq * c.anchor_b)) / 2;
+    const Vec3 mean_motion = ((sa.dp + rotate(sa.dq, c.anchor_a)) + (sb.dp + rotate(sb.dq, c.anchor_b))) / 2;
     const Vec3 half_span = (c.anchor_a - c.anchor_b) / 2;
     hit.ra = mean_motion - sa.dp + half_span;
     hit.rb = mean_motion - sb.dp - half_span;

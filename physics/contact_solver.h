@@ -47,7 +47,7 @@ struct ContactConstraint {
 
 // Separation now, from how far each body has moved and turned since the step began.
 inline Real current_separation(const ContactConstraint& c, const BodyState& sa, const BodyState& sb) {
-  const Vec3 moved = (sa.dp - sb.dp) + (sa.dq * c.anchor_a - sb.dq * c.anchor_b);
+  const Vec3 moved = (sa.dp - sb.dp) + (rotate(sa.dq, c.anchor_a) - rotate(sb.dq, c.anchor_b));
   return moved.dot(c.normal) + c.adjusted_separation;
 }
 
@@ -57,6 +57,11 @@ struct ManifoldConstraint {
   int first = 0, count = 0;            // its points in the constraint list
   Vec3 centre_a = Vec3::Zero(), centre_b = Vec3::Zero();  // the points' centroid relative to each centre
   Real tangent_mass1 = 0, tangent_mass2 = 0, twist_mass = 0;
+  // The friction rows' angular parts, fixed for the step: r x t at the centroid, and how an
+  // impulse along t1, t2 or a twist about n turns each body (I^-1 (r x t), I^-1 n).
+  Vec3 ra_cross_t1 = Vec3::Zero(), ra_cross_t2 = Vec3::Zero(), rb_cross_t1 = Vec3::Zero(), rb_cross_t2 = Vec3::Zero();
+  Vec3 turn_a1 = Vec3::Zero(), turn_a2 = Vec3::Zero(), turn_b1 = Vec3::Zero(), turn_b2 = Vec3::Zero();
+  Vec3 twist_a = Vec3::Zero(), twist_b = Vec3::Zero();
   Real twist_radius = 0;               // mean distance of the points from the centroid
   Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;  // this sub-step's
   // Static friction's anchor: where the pair first touched, in each body's frame, and how far A
@@ -87,6 +92,7 @@ class ContactSolver {
  private:
   void solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias);
   void solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum, bool use_bias);
+  void apply_friction(const ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real j1, Real j2, Real twist) const;
   bool bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real h);
 
   std::vector<ContactConstraint> constraints_;

@@ -8,7 +8,7 @@ namespace impulse::physics {
 namespace {
 
 // How far each body has moved since the step began, applied to its anchor.
-Vec3 anchor_now(const BodyState& s, const Vec3& anchor) { return s.dp + s.dq * anchor; }
+Vec3 anchor_now(const BodyState& s, const Vec3& anchor) { return s.dp + rotate(s.dq, anchor); }
 
 // Velocity of B's point at rb relative to A's point at ra (the opposite of relative_velocity).
 Vec3 velocity_b_minus_a(const BodyState& sa, const BodyState& sb, const Vec3& ra, const Vec3& rb) {
@@ -87,7 +87,7 @@ void JointSolver::warm_start(std::vector<BodyState>& states) const {
     BodyState& sa = states[p.a];
     BodyState& sb = states[p.b];
     const Joint& j = *p.joint;
-    const Vec3 ra = sa.dq * p.anchor_a, rb = sb.dq * p.anchor_b;
+    const Vec3 ra = rotate(sa.dq, p.anchor_a), rb = rotate(sb.dq, p.anchor_b);
     Vec3 linear = j.linear_impulse;
     Vec3 angular = Vec3::Zero();
     if (j.type == JointType::distance) {
@@ -96,7 +96,7 @@ void JointSolver::warm_start(std::vector<BodyState>& states) const {
     }
     if (j.type == JointType::hinge) {
       Vec3 t1, t2;
-      tangent_basis(sa.dq * p.axis_a, t1, t2);
+      tangent_basis(rotate(sa.dq, p.axis_a), t1, t2);
       angular = j.angular_impulse[0] * t1 + j.angular_impulse[1] * t2;
     }
     apply_impulse(sa, sb, ra, rb, -linear);  // +linear on B, -linear on A
@@ -110,7 +110,7 @@ void JointSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_bia
     BodyState& sa = states[p.a];
     BodyState& sb = states[p.b];
     Joint& j = *p.joint;
-    const Vec3 ra = sa.dq * p.anchor_a, rb = sb.dq * p.anchor_b;
+    const Vec3 ra = rotate(sa.dq, p.anchor_a), rb = rotate(sb.dq, p.anchor_b);
     const Real bias_rate = use_bias ? softness_.bias_rate : 0;
     const Real mass_scale = use_bias ? softness_.mass_scale : 1;
     const Real impulse_scale = use_bias ? softness_.impulse_scale : 0;
@@ -119,7 +119,7 @@ void JointSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_bia
 
     if (j.type == JointType::hinge) {
       // Two angular rows: no relative spin across the hinge axis.
-      const Vec3 axis_a = sa.dq * p.axis_a, axis_b = sb.dq * p.axis_b;
+      const Vec3 axis_a = rotate(sa.dq, p.axis_a), axis_b = rotate(sb.dq, p.axis_b);
       Vec3 t[2];
       tangent_basis(axis_a, t[0], t[1]);
       const Vec3 misalignment = axis_a.cross(axis_b);

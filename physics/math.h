@@ -13,6 +13,17 @@ using Quat = Eigen::Quaternion<Real>;
 inline bool is_finite(const Vec3& v) { return v.allFinite(); }
 inline bool is_finite(const Quat& q) { return q.coeffs().allFinite(); }
 
+// q v q*, written out in scalars: v + w t + u x t with t = 2 u x v (u = q's vector part). Eigen's
+// q * v compiles (GCC 12) into stores and wider reloads that stall store forwarding, and the
+// solver rotates anchors in its innermost loops.
+inline Vec3 rotate(const Quat& q, const Vec3& v) {
+  const Real ux = q.x(), uy = q.y(), uz = q.z(), w = q.w();
+  const Real tx = 2 * (uy * v.z() - uz * v.y());
+  const Real ty = 2 * (uz * v.x() - ux * v.z());
+  const Real tz = 2 * (ux * v.y() - uy * v.x());
+  return Vec3(v.x() + w * tx + (uy * tz - uz * ty), v.y() + w * ty + (uz * tx - ux * tz), v.z() + w * tz + (ux * ty - uy * tx));
+}
+
 // The matrix [r]x with [r]x v = r x v.
 inline Mat3 skew(const Vec3& r) {
   Mat3 m;
