@@ -27,6 +27,13 @@ Real safe_inverse(Real k) { return k > 0 ? 1 / k : 0; }
 constexpr int kManifoldIterations = 2;
 constexpr int kMaxManifoldPoints = 8;
 
+// Contacts stiffer than this fraction of the sub-step rate are not stable. Box2D's rule is 1/4; at
+// 1/4 (and 1/5) a wall of boxes one box thick (the pyramids of ../shared/bench/SCENES.md, even
+// one of 21 boxes) starts to sway out of its plane, growing over seconds, whatever the damping
+// ratio, passes or solve order; friction feeds it (without friction it stays still). At 1/6 and
+// below every pyramid measured stood still.
+constexpr Real kMaxHertzPerSubstepRate = Real(1) / 6;
+
 uint64_t pair_key(int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); }
 uint64_t point_key(const Contact& c) { return (pair_key(c.body_a, c.body_b) * 0x9E3779B97F4A7C15ull) ^ c.feature; }
 
@@ -56,7 +63,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
                             const std::vector<BodyState>& states, const ContactSolverSettings& settings,
                             const Vec3& gravity, Real h) {
   settings_ = settings;
-  const Real hertz = std::min(settings.contact_hertz, 0.25 / h);
+  const Real hertz = std::min(settings.contact_hertz, kMaxHertzPerSubstepRate / h);
   const Softness contact_soft = make_softness(hertz, settings.contact_damping_ratio, h);
   // Contacts against static bodies can be stiffer: only one body moves (Box2D's staticSoftness).
   const Softness static_soft = make_softness(2 * hertz, settings.contact_damping_ratio, h);

@@ -14,8 +14,8 @@
 namespace impulse::physics {
 
 struct ContactSolverSettings {
-  Real contact_hertz = 120;            // stiffness of the position correction, at most 1/4 of the
-                                       // sub-step rate (Box2D's rule; stiffer is unstable)
+  Real contact_hertz = 120;            // stiffness of the position correction, at most 1/6 of the
+                                       // sub-step rate (see kMaxHertzPerSubstepRate)
   Real contact_damping_ratio = 10;
   Real max_push_velocity = 3;          // m/s, fastest the correction moves bodies apart
   Real restitution_threshold = 0.5;    // m/s, slower hits do not bounce (no resting jiggle)
