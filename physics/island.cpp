@@ -67,9 +67,23 @@ void Islands::wake_island(std::vector<Body>& bodies, int island) {
 }
 
 bool Islands::wake_touched(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
-                           const std::vector<std::pair<int, int>>& links) {
+                           const std::vector<std::pair<int, int>>& links, Real touching_distance,
+                           const SleepSettings& settings) {
   island_of_.resize(bodies.size(), -1);
   bool woke = false;
+  // A contact wakes a sleeper when it touches, or when the awake body closes on it: a ball
+  // thrown at a sleeping stack wakes it before it arrives (the solver would take the sleeper
+  // for static), while a neighbour merely resting nearby leaves it asleep. Were any nearby
+  // contact to wake it, a resting heap could never sleep: each island that fell asleep was
+  // woken at once by the next one, a few millimetres away.
+  auto wakes = [&](const Contact& c) {
+    if (c.separation < touching_distance) return true;
+    const Body& a = bodies[c.body_a];
+    const Body& b = bodies[c.body_b];
+    const Vec3 va = a.velocity + a.angular_velocity.cross(c.point - a.position);
+    const Vec3 vb = b.velocity + b.angular_velocity.cross(c.point - b.position);
+    return -(va - vb).dot(c.normal) > settings.velocity_tolerance;  // closing
+  };
   auto consider = [&](int a, int b) {
     const Body& ba = bodies[a];
     const Body& bb = bodies[b];
@@ -80,7 +94,8 @@ bool Islands::wake_touched(std::vector<Body>& bodies, const std::vector<Contact>
     bodies[sleeper].sleep_time = 0;
     woke = true;
   };
-  for (const Contact& c : contacts) consider(c.body_a, c.body_b);
+  for (const Contact& c : contacts)
+    if (wakes(c)) consider(c.body_a, c.body_b);
   for (const auto& [a, b] : links) consider(a, b);
   return woke;
 }

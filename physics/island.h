@@ -24,10 +24,12 @@ class Islands {
               const std::vector<std::pair<int, int>>& links, Real touching_distance, Real dt,
               const SleepSettings& settings);
 
-  // Wakes the island of every sleeping body that one of `contacts` or `links` joins to an awake
-  // body. Returns whether any woke (their mutual contacts then need finding again).
+  // Wakes the island of every sleeping body that a link joins to an awake body, or that an awake
+  // body touches (a contact closer than touching_distance) or closes on faster than the sleep
+  // tolerance. Returns whether any woke (their mutual contacts then need finding again).
   bool wake_touched(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
-                    const std::vector<std::pair<int, int>>& links);
+                    const std::vector<std::pair<int, int>>& links, Real touching_distance,
+                    const SleepSettings& settings);
 
  private:
   int find(int i);

@@ -110,7 +110,7 @@ void World::find_contacts() {
     awake_.resize(bodies_.size());
     for (size_t i = 0; i < bodies_.size(); ++i) awake_[i] = !bodies_[i].is_static() && bodies_[i].awake;
     contact_finder_.find(bodies_, awake_, settings_.time_step, 4 * settings_.linear_slop, contacts_);
-  } while (islands_.wake_touched(bodies_, contacts_, links_));
+  } while (islands_.wake_touched(bodies_, contacts_, links_, settings_.linear_slop, settings_.sleep));
 }
 
 void World::load_states() {

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -38,6 +39,40 @@ TEST(Sleep, ABallThatStopsFallsAsleepAndWakesWhenHit) {
   }
   EXPECT_TRUE(woke);
   EXPECT_GT(world.bodies()[hammer].position.y(), 0.5) << "the hammer passed through";
+}
+
+// A ball rolling along a sleeping box, 1 cm from its side, neither touches nor closes on it: the
+// box sleeps on. When any nearby contact woke a sleeper, it woke at once, slept again 0.5 s later, and
+// so on; in a resting heap the islands kept waking each other and the heap never slept.
+TEST(Sleep, ABallRollingAlongASleepingBoxLeavesItAsleep) {
+  World world;
+  add_ground(world, 0.0, 0.5);
+  const int box = add_box(world, Vec3(0, 0.5, 0), Vec3(0.5, 0.5, 3.5), 1.0);  // a long box
+  const int ball = add_sphere(world, Vec3(1.01, 0.5, -2.5), 0.5, 1.0, Vec3(0, 0, 0.5));
+  world.body(ball).angular_velocity = Vec3(1.0, 0, 0);  // rolling: v = w x (-R up)
+  int woken = 0;
+  bool was_awake = true;
+  for (int i = 0; i < 12 * 60; ++i) {
+    world.step();
+    const bool awake = world.bodies()[box].awake;
+    if (awake && !was_awake) ++woken;
+    was_awake = awake;
+    if (i == 60) ASSERT_FALSE(awake) << "the box should be asleep after 1 s";
+  }
+  EXPECT_EQ(woken, 0) << "times the passing ball woke the box";
+  EXPECT_GT(world.bodies()[ball].position.z(), 2.5) << "the ball rolled on along it";
+}
+
+// ...but a ball thrown at it wakes it before it arrives: the box is pushed, not hit as if static.
+TEST(Sleep, ABallThrownAtASleepingBoxWakesItAndPushesIt) {
+  World world;
+  add_ground(world, 0.0, 0.5);
+  const int box = add_box(world, Vec3(0, 0.5, 0), Vec3(0.5, 0.5, 0.5), 1.0);
+  for (int i = 0; i < 60; ++i) world.step();
+  ASSERT_FALSE(world.bodies()[box].awake);
+  add_sphere(world, Vec3(-2, 0.5, 0), 0.25, 2.0, Vec3(4, 0, 0));
+  for (int i = 0; i < 60; ++i) world.step();
+  EXPECT_GT(world.bodies()[box].position.x(), 0.1) << "m: the box was not pushed";
 }
 
 TEST(Sleep, OffKeepsEverythingAwake) {
