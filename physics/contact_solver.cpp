@@ -25,7 +25,7 @@ Real safe_inverse(Real k) { return k > 0 ? 1 / k : 0; }
 // on a box then tilts; two bring the points close enough to agreement (with friction anchors) to
 // hold the stack tests, four cost 20 % more for no gain there.
 constexpr int kManifoldIterations = 2;
-constexpr int kMaxManifoldPoints = 8;
+constexpr int kMaxManifoldPoints = 4;  // the collision routines reduce every pair to four
 
 // Contacts stiffer than this fraction of the sub-step rate are not stable. Box2D's rule is 1/4; at
 // 1/4 (and 1/5) a wall of boxes one box thick (the pyramids of ../shared/bench/SCENES.md, even
@@ -99,8 +99,9 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
     point_keys_.push_back(point_key(contact));
     if (auto warm = warm_normal_.find(point_keys_.back()); warm != warm_normal_.end()) c.normal_impulse = warm->second;
 
-    // Consecutive contacts of one pair form its manifold.
-    if (manifolds_.empty() || manifolds_.back().a != c.a || manifolds_.back().b != c.b) {
+    // Consecutive contacts of one pair form its manifold (of at most four points).
+    if (manifolds_.empty() || manifolds_.back().a != c.a || manifolds_.back().b != c.b ||
+        manifolds_.back().count == kMaxManifoldPoints) {
       ManifoldConstraint m;
       m.a = c.a;
       m.b = c.b;
@@ -122,6 +123,14 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
     m.centre_b = centre + (first.anchor_b - first.anchor_a);
     m.tangent_mass1 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent1));
     m.tangent_mass2 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent2));
+    // How an impulse at point j changes the normal velocity at point i (eq. 13's denominator,
+    // generalised: its diagonal is the inverse of each point's normal mass).
+    for (int i = 0; i < m.count; ++i)
+      for (int j = 0; j < m.count; ++j) {
+        const ContactConstraint& ci = constraints_[m.first + i];
+        const ContactConstraint& cj = constraints_[m.first + j];
+        m.coupling[i][j] = (sa.inv_mass + sb.inv_mass) * ci.normal.dot(cj.normal) + ci.ra_cross_n.dot(cj.angular_a) + ci.rb_cross_n.dot(cj.angular_b);
+      }
     m.twist_mass = safe_inverse(first.normal.dot((sa.inv_inertia + sb.inv_inertia) * first.normal));
     m.ra_cross_t1 = m.centre_a.cross(first.tangent1);
     m.ra_cross_t2 = m.centre_a.cross(first.tangent2);
@@ -185,19 +194,18 @@ void ContactSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_b
 void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
   BodyState& sa = states[m.a];
   BodyState& sb = states[m.b];
-  // The velocities in locals: the rows below then work in registers instead of re-reading the
-  // states after every impulse (which the compiler must assume could alias the constraints).
-  Vec3 va = sa.v, wa = sa.w, vb = sb.v, wb = sb.w;
-  const Real inv_ma = sa.inv_mass, inv_mb = sb.inv_mass;
   const Vec3 moved = sa.dp - sb.dp;
-  // Each point's target, from its separation now (positions do not change during the passes).
-  struct Row { ContactConstraint* c; Real bias, mass, impulse_scale, impulse; };
+  const Vec3 dv = sa.v - sb.v;
+  // Each point's target, from its separation now (positions do not change during the passes),
+  // and its normal velocity now.
+  struct Row { ContactConstraint* c; int point; Real vn, bias, mass, impulse_scale, impulse, start; };
   Row rows[kMaxManifoldPoints];
   int row_count = 0;
-  for (int i = 0; i < m.count && row_count < kMaxManifoldPoints; ++i) {
+  for (int i = 0; i < m.count; ++i) {
     ContactConstraint& c = constraints_[m.first + i];
     const Real separation = (moved + (rotate(sa.dq, c.anchor_a) - rotate(sb.dq, c.anchor_b))).dot(c.normal) + c.adjusted_separation;
-    Row row{&c, 0, c.normal_mass, 0, c.normal_impulse};
+    const Real vn = dv.dot(c.normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n);
+    Row row{&c, i, vn, 0, c.normal_mass, 0, c.normal_impulse, c.normal_impulse};
     if (separation > 0) {
       // Speculative: may close the gap this sub-step, no further. The relax pass leaves it be:
       // the next solve clamps it anyway, and slowing a body before it touches would lose the
@@ -214,27 +222,34 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
 
   // Accumulated and clamped to push only; the target is "stop approaching" (restitution is
   // bounce()'s). Several passes when the manifold has several points; the relax pass, which only
-  // takes back the bias velocity, makes do with one.
+  // takes back the bias velocity, makes do with one. Gauss-Seidel point after point, as if each
+  // impulse were applied to the bodies at once; but the points of one pair see each other only
+  // through the coupling matrix, so the passes update their normal velocities alone, and the
+  // bodies get the sum afterwards (the same arithmetic, without a chain through the bodies'
+  // velocities after every point).
   const int passes = row_count == 1 || !use_bias ? 1 : kManifoldIterations;
   for (int pass = 0; pass < passes; ++pass) {
     for (int k = 0; k < row_count; ++k) {
       Row& row = rows[k];
-      const ContactConstraint& c = *row.c;
-      const Real vn = (va - vb).dot(c.normal) + wa.dot(c.ra_cross_n) - wb.dot(c.rb_cross_n);
-      const Real new_impulse = std::max(row.impulse - row.mass * (vn + row.bias) - row.impulse_scale * row.impulse, Real(0));
+      const Real new_impulse = std::max(row.impulse - row.mass * (row.vn + row.bias) - row.impulse_scale * row.impulse, Real(0));
       const Real applied = new_impulse - row.impulse;
       row.impulse = new_impulse;
-      va += (inv_ma * applied) * c.normal;
-      wa += applied * c.angular_a;
-      vb -= (inv_mb * applied) * c.normal;
-      wb -= applied * c.angular_b;
+      for (int j = 0; j < row_count; ++j) rows[j].vn += m.coupling[rows[j].point][row.point] * applied;
     }
   }
-  for (int k = 0; k < row_count; ++k) rows[k].c->normal_impulse = rows[k].impulse;
-  sa.v = va;
-  sa.w = wa;
-  sb.v = vb;
-  sb.w = wb;
+  Vec3 linear = Vec3::Zero(), turn_a = Vec3::Zero(), turn_b = Vec3::Zero();
+  for (int k = 0; k < row_count; ++k) {
+    ContactConstraint& c = *rows[k].c;
+    const Real applied = rows[k].impulse - rows[k].start;
+    c.normal_impulse = rows[k].impulse;
+    linear += applied * c.normal;
+    turn_a += applied * c.angular_a;
+    turn_b += applied * c.angular_b;
+  }
+  sa.v += sa.inv_mass * linear;
+  sa.w += turn_a;
+  sb.v -= sb.inv_mass * linear;
+  sb.w -= turn_b;
 }
 
 // Tangent impulses j1, j2 at the points' centroid and a twist about the normal: +j on A, -j on B.

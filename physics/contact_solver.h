@@ -56,6 +56,7 @@ struct ManifoldConstraint {
   int a = -1, b = -1;
   int first = 0, count = 0;            // its points in the constraint list
   Vec3 centre_a = Vec3::Zero(), centre_b = Vec3::Zero();  // the points' centroid relative to each centre
+  Real coupling[4][4] = {};            // d(normal velocity at i) / d(impulse at j), for the points
   Real tangent_mass1 = 0, tangent_mass2 = 0, twist_mass = 0;
   // The friction rows' angular parts, fixed for the step: r x t at the centroid, and how an
   // impulse along t1, t2 or a twist about n turns each body (I^-1 (r x t), I^-1 n).

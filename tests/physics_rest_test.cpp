@@ -57,7 +57,9 @@ TEST(Sleep, ABallRollingAlongASleepingBoxLeavesItAsleep) {
     const bool awake = world.bodies()[box].awake;
     if (awake && !was_awake) ++woken;
     was_awake = awake;
-    if (i == 60) ASSERT_FALSE(awake) << "the box should be asleep after 1 s";
+    if (i == 60) {
+      ASSERT_FALSE(awake) << "the box should be asleep after 1 s";
+    }
   }
   EXPECT_EQ(woken, 0) << "times the passing ball woke the box";
   EXPECT_GT(world.bodies()[ball].position.z(), 2.5) << "the ball rolled on along it";
