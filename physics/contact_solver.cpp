@@ -49,12 +49,15 @@ Real touch_velocity(Real vn, Real separation, Real a, Real h) {
   return -std::sqrt(v_squared);
 }
 
-// Friction impulses j1, j2 clamped to the Coulomb disc of radius `limit`.
-void clamp_to_disc(Real& j1, Real& j2, Real limit) {
-  const Real length = std::sqrt(j1 * j1 + j2 * j2);
-  if (length <= limit) return;
-  j1 *= limit / length;
-  j2 *= limit / length;
+// Friction impulses j1, j2 clamped to the Coulomb disc of radius `limit`. Returns whether they
+// asked for more than `slip` (the pair slides). No square root while they stick.
+bool clamp_to_disc(Real& j1, Real& j2, Real limit, Real slip = INFINITY) {
+  const Real length_squared = j1 * j1 + j2 * j2;
+  if (length_squared <= limit * limit) return false;
+  const Real scale = limit / std::sqrt(length_squared);
+  j1 *= scale;
+  j2 *= scale;
+  return length_squared > slip * slip;
 }
 
 }  // namespace
@@ -284,9 +287,7 @@ void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodySta
   const Real old1 = m.tangent_impulse1, old2 = m.tangent_impulse2;
   m.tangent_impulse1 += -m.tangent_mass1 * mass_scale * v1 - impulse_scale * old1;
   m.tangent_impulse2 += -m.tangent_mass2 * mass_scale * v2 - impulse_scale * old2;
-  const Real wanted = std::sqrt(m.tangent_impulse1 * m.tangent_impulse1 + m.tangent_impulse2 * m.tangent_impulse2);
-  clamp_to_disc(m.tangent_impulse1, m.tangent_impulse2, limit);
-  if (wanted > limit * 1.0001 + 1e-12) m.slipped = true;
+  if (clamp_to_disc(m.tangent_impulse1, m.tangent_impulse2, limit, 1.0001 * limit + 1e-12)) m.slipped = true;
 
   Real twist = 0;
   if (m.twist_radius > 0) {
