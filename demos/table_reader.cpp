@@ -69,7 +69,7 @@ std::string TableReader::string(std::string_view key, std::string fallback) {
   return *v;
 }
 
-std::string TableReader::choice(std::string_view key, std::string fallback, std::initializer_list<std::string_view> choices) {
+std::string TableReader::choice(std::string_view key, std::string fallback, std::span<const std::string_view> choices) {
   const std::string value = string(key, fallback);
   std::string known;
   for (std::string_view c : choices) {

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -28,7 +29,10 @@ class TableReader {
   bool boolean(std::string_view key, bool fallback);
   std::string string(std::string_view key, std::string fallback);
   // One of `choices`, e.g. method = "impulse".
-  std::string choice(std::string_view key, std::string fallback, std::initializer_list<std::string_view> choices);
+  std::string choice(std::string_view key, std::string fallback, std::span<const std::string_view> choices);
+  std::string choice(std::string_view key, std::string fallback, std::initializer_list<std::string_view> choices) {
+    return choice(key, std::move(fallback), std::span<const std::string_view>(choices.begin(), choices.size()));
+  }
   physics::Vec3 vec3(std::string_view key, const physics::Vec3& fallback);
   render::Colour colour(std::string_view key, render::Colour fallback);
 

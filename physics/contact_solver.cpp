@@ -11,16 +11,6 @@ Real mix_friction(Real a, Real b) { return std::sqrt(a * b); }
 
 namespace {
 
-// Inverse of the effective mass along direction d at anchors ra, rb:
-// 1/m_a + 1/m_b + d . [(I_a^-1 (r_a x d)) x r_a + (I_b^-1 (r_b x d)) x r_b]  (eq. 13's denominator)
-Real inverse_effective_mass(const BodyState& sa, const BodyState& sb, const Vec3& ra, const Vec3& rb, const Vec3& d) {
-  const Vec3 ang_a = (sa.inv_inertia * ra.cross(d)).cross(ra);
-  const Vec3 ang_b = (sb.inv_inertia * rb.cross(d)).cross(rb);
-  return sa.inv_mass + sb.inv_mass + d.dot(ang_a + ang_b);
-}
-
-Real safe_inverse(Real k) { return k > 0 ? 1 / k : 0; }
-
 // Passes over a manifold's points per solve: one pass favours the point solved first, and a box
 // on a box then tilts; two bring the points close enough to agreement (with friction anchors) to
 // hold the stack tests, four cost 20 % more for no gain there.
@@ -93,8 +83,6 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
     c.angular_a = sa.inv_inertia * c.ra_cross_n;
     c.angular_b = sb.inv_inertia * c.rb_cross_n;
     c.normal_mass = safe_inverse(sa.inv_mass + sb.inv_mass + c.ra_cross_n.dot(c.angular_a) + c.rb_cross_n.dot(c.angular_b));
-    c.tangent_mass1 = safe_inverse(inverse_effective_mass(sa, sb, c.anchor_a, c.anchor_b, c.tangent1));
-    c.tangent_mass2 = safe_inverse(inverse_effective_mass(sa, sb, c.anchor_a, c.anchor_b, c.tangent2));
     c.friction = settings.friction ? mix_friction(body_a.material.friction, body_b.material.friction) : 0;
     c.restitution = mix_restitution(body_a.material.restitution, body_b.material.restitution);
     c.softness = (sa.inv_mass == 0 || sb.inv_mass == 0) ? static_soft : contact_soft;

@@ -33,7 +33,7 @@ struct ContactConstraint {
   Vec3 normal, tangent1, tangent2;
   Vec3 anchor_a, anchor_b;             // contact point relative to each centre, at step start
   Real adjusted_separation = 0;        // separation - dot(anchor_a - anchor_b, normal)
-  Real normal_mass = 0, tangent_mass1 = 0, tangent_mass2 = 0;
+  Real normal_mass = 0;
   // The normal row's angular parts, fixed for the step: r x n, and I^-1 (r x n) for each body.
   Vec3 ra_cross_n = Vec3::Zero(), rb_cross_n = Vec3::Zero();
   Vec3 angular_a = Vec3::Zero(), angular_b = Vec3::Zero();

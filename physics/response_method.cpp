@@ -17,6 +17,13 @@ std::string_view method_name(ResponseMethod method) {
   return "?";
 }
 
+static_assert(std::size(kNames) == 4, "method_names() lists every method");
+
+const std::array<std::string_view, 4>& method_names() {
+  static const std::array<std::string_view, 4> names = {kNames[0].second, kNames[1].second, kNames[2].second, kNames[3].second};
+  return names;
+}
+
 std::optional<ResponseMethod> method_from_name(std::string_view name) {
   for (const auto& [m, n] : kNames)
     if (n == name) return m;

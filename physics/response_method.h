@@ -1,5 +1,6 @@
 // The workshop's ways of answering a collision, selectable per scene for side-by-side teaching.
 #pragma once
+#include <array>
 #include <optional>
 #include <string_view>
 
@@ -13,6 +14,7 @@ enum class ResponseMethod {
 };
 
 std::string_view method_name(ResponseMethod method);
+const std::array<std::string_view, 4>& method_names();  // as scene files spell them
 std::optional<ResponseMethod> method_from_name(std::string_view name);
 
 // Spring-damper contact forces of the penalty method, per contact, as a frequency and damping

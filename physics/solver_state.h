@@ -32,6 +32,16 @@ inline void apply_impulse(BodyState& sa, BodyState& sb, const Vec3& ra, const Ve
   sb.w -= sb.inv_inertia * rb.cross(impulse);
 }
 
+// Inverse of the effective mass along direction d at anchors ra, rb:
+// 1/m_a + 1/m_b + d . [(I_a^-1 (r_a x d)) x r_a + (I_b^-1 (r_b x d)) x r_b]  (eq. 13's denominator)
+inline Real inverse_effective_mass(const BodyState& sa, const BodyState& sb, const Vec3& ra, const Vec3& rb, const Vec3& d) {
+  const Vec3 ang_a = (sa.inv_inertia * ra.cross(d)).cross(ra);
+  const Vec3 ang_b = (sb.inv_inertia * rb.cross(d)).cross(rb);
+  return sa.inv_mass + sb.inv_mass + d.dot(ang_a + ang_b);
+}
+
+inline Real safe_inverse(Real k) { return k > 0 ? 1 / k : 0; }
+
 // Soft constraint coefficients (Box2D v3's b2Softness, from Erin Catto's "Solver2D" notes):
 // a spring of `hertz` with damping ratio `zeta`, solved implicitly over a sub-step of h seconds.
 struct Softness {

@@ -76,8 +76,8 @@ void apply_penalty_forces(std::vector<ContactConstraint>& constraints, std::vect
     // Friction: the impulse that would stop the sliding this sub-step, at most mu * jn.
     if (c.friction == 0) continue;
     const Vec3 dvt = relative_velocity(sa, sb, c.anchor_a, c.anchor_b);
-    Real j1 = -c.tangent_mass1 * dvt.dot(c.tangent1);
-    Real j2 = -c.tangent_mass2 * dvt.dot(c.tangent2);
+    Real j1 = -safe_inverse(inverse_effective_mass(sa, sb, c.anchor_a, c.anchor_b, c.tangent1)) * dvt.dot(c.tangent1);
+    Real j2 = -safe_inverse(inverse_effective_mass(sa, sb, c.anchor_a, c.anchor_b, c.tangent2)) * dvt.dot(c.tangent2);
     const Real length = std::hypot(j1, j2), limit = c.friction * jn;
     if (length > limit) {
       j1 *= limit / length;
