@@ -199,6 +199,10 @@ const char* stack_verdict(const RunResult& r) {
   return "falls";
 }
 
+// The issue asks the 5050-box pyramid only to stand its 500 steps: 100 rows of soft contacts
+// sink its top by centimetres. Standing: nothing moved a tenth of a box, nothing moves at the end.
+bool stands(const RunResult& r) { return std::max(r.top_drift, r.any_drift) < 0.1 && r.moving == 0; }
+
 const Outcome* find(const std::vector<Outcome>& outcomes, const std::string& scene, bool sleep) {
   for (const Outcome& o : outcomes)
     if (o.run.scene == scene && o.run.sleep == sleep && o.both_ok()) return &o;
@@ -213,16 +217,18 @@ void print_goals(const std::vector<Outcome>& outcomes) {
     std::printf("  %-14s %-9s impulse %8.3f  Bullet %8.3f  ratio %5.2f  %s\n", scene, run_length(o->run.steps).c_str(),
                 o->impulse.result.median_ms, o->bullet.result.median_ms, o->ratio(), o->ratio() <= 0.8 ? "met" : "MISSED");
   }
-  std::printf("\nGoal 2: impulse's stacks hold (largest drift < 1 cm; 'falls': > 50 cm) where Bullet's fall\n");
+  std::printf("\nGoal 2: impulse's stacks hold (largest drift < 1 cm; the large pyramid 'stands': < 10 cm and\n"
+              "nothing moving at the end; 'falls': > 50 cm) where Bullet's fall\n");
   for (const Outcome& o : outcomes) {
     if (!o.both_ok() || o.impulse.result.top_drift < 0) continue;
-    const char* i = stack_verdict(o.impulse.result);
-    const char* b = stack_verdict(o.bullet.result);
+    const bool large = o.run.scene == "large-pyramid";
+    const char* i = large && stands(o.impulse.result) ? "stands" : stack_verdict(o.impulse.result);
+    const char* b = large && stands(o.bullet.result) ? "stands" : stack_verdict(o.bullet.result);
     std::printf("  %-14s %-9s sleep %-3s  impulse %-6s (%.4f m)  Bullet %-6s (%.4f m)  %s\n", o.run.scene.c_str(),
                 run_length(o.run.steps).c_str(), o.run.sleep ? "on" : "off", i,
                 std::max(o.impulse.result.top_drift, o.impulse.result.any_drift), b,
                 std::max(o.bullet.result.top_drift, o.bullet.result.any_drift),
-                std::strcmp(i, "holds") == 0 ? "met" : "MISSED");
+                std::strcmp(i, "holds") == 0 || std::strcmp(i, "stands") == 0 ? "met" : "MISSED");
   }
 }
 
