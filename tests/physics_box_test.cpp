@@ -150,7 +150,7 @@ Real fastest_speed(const World& world, const std::vector<int>& boxes) {
 }
 
 // A wall one box thick is where too stiff contacts show first: at a quarter of the sub-step rate
-// (Box2D's limit) even this 21-box pyramid swayed out of its plane, 2.7 cm in 60 s.
+// (Box2D's limit) even this 21-box pyramid swayed out of its plane, 2 to 3 cm within a minute.
 TEST(Stack, PyramidOf21BoxesStaysStill) {
   World world(no_sleep());
   add_ground_box(world);
