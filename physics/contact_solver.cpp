@@ -184,7 +184,6 @@ void ContactSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_b
 void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
   BodyState& sa = states[m.a];
   BodyState& sb = states[m.b];
-  const Vec3 moved = sa.dp - sb.dp;
   const Vec3 dv = sa.v - sb.v;
   // Each point's target, from its separation now (positions do not change during the passes),
   // and its normal velocity now.
@@ -193,7 +192,7 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
   int row_count = 0;
   for (int i = 0; i < m.count; ++i) {
     ContactConstraint& c = constraints_[m.first + i];
-    const Real separation = (moved + (rotate(sa.dq, c.anchor_a) - rotate(sb.dq, c.anchor_b))).dot(c.normal) + c.adjusted_separation;
+    const Real separation = current_separation(c, sa, sb);
     const Real vn = dv.dot(c.normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n);
     Row row{&c, i, vn, 0, c.normal_mass, 0, c.normal_impulse, c.normal_impulse};
     if (separation > 0) {
