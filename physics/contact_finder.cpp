@@ -3,14 +3,23 @@
 
 #include "physics/collide.h"
 
+#include <algorithm>
+
 namespace impulse::physics {
 
 Real motion_bound(const Body& body, Real dt) {
   return (body.velocity.norm() + body.angular_velocity.norm() * bounding_radius(body.shape)) * dt;
 }
 
+namespace {
+
+// Fewer pairs than this are not worth waking a helper for.
+constexpr size_t kMinPairsPerThread = 128;
+
+}  // namespace
+
 void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint8_t>& awake, Real dt,
-                         Real base_margin, std::vector<Contact>& out) {
+                         Real base_margin, ThreadTeam& team, std::vector<Contact>& out) {
   out.clear();
   // Each box grows by its body's share of a pair's margin, so that two boxes overlap whenever
   // their shapes are within base_margin + motion_bound(a) + motion_bound(b).
@@ -22,10 +31,27 @@ void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint
     boxes_[i] = body_aabb(bodies[i], base_margin / 2 + motion_bounds_[i]);
   }
   broad_phase_.find_pairs(boxes_, awake, pairs_);
-  for (const BodyPair& pair : pairs_) {
-    const Real margin = base_margin + motion_bounds_[pair.a] + motion_bounds_[pair.b];
-    collide(bodies[pair.a], pair.a, bodies[pair.b], pair.b, margin, out);
+  auto collide_range = [&](size_t begin, size_t end, std::vector<Contact>& contacts) {
+    for (size_t k = begin; k < end; ++k) {
+      const BodyPair& pair = pairs_[k];
+      const Real margin = base_margin + motion_bounds_[pair.a] + motion_bounds_[pair.b];
+      collide(bodies[pair.a], pair.a, bodies[pair.b], pair.b, margin, contacts);
+    }
+  };
+  const size_t threads = std::min(size_t(team.size()), pairs_.size() / kMinPairsPerThread);
+  if (threads < 2) {
+    collide_range(0, pairs_.size(), out);
+    return;
   }
+  // Consecutive runs of pairs, one per thread, joined in order afterwards.
+  shares_.resize(threads - 1);
+  team.run([&](int thread) {
+    if (size_t(thread) >= threads) return;
+    std::vector<Contact>& contacts = thread == 0 ? out : shares_[thread - 1];
+    contacts.clear();
+    collide_range(pairs_.size() * thread / threads, pairs_.size() * (thread + 1) / threads, contacts);
+  });
+  for (const std::vector<Contact>& share : shares_) out.insert(out.end(), share.begin(), share.end());
 }
 
 }  // namespace impulse::physics

@@ -4,6 +4,7 @@
 #include "physics/body.h"
 #include "physics/broadphase.h"
 #include "physics/contact.h"
+#include "physics/thread_team.h"
 
 #include <cstdint>
 #include <vector>
@@ -15,15 +16,17 @@ class ContactFinder {
   // Appends the contacts of every pair in which at least one body is awake (awake[i] != 0;
   // static bodies are never awake) into `out` (cleared first). A pair's speculative margin is
   // base_margin plus how far each body can move in dt. The contacts come pair by pair in
-  // increasing order of (i, j), exactly as a loop over all pairs would give them.
+  // increasing order of (i, j), exactly as a loop over all pairs would give them, however many
+  // threads of `team` share the narrow phase.
   void find(const std::vector<Body>& bodies, const std::vector<uint8_t>& awake, Real dt, Real base_margin,
-            std::vector<Contact>& out);
+            ThreadTeam& team, std::vector<Contact>& out);
 
  private:
   BroadPhase broad_phase_;
   std::vector<Aabb> boxes_;
   std::vector<Real> motion_bounds_;
   std::vector<BodyPair> pairs_;
+  std::vector<std::vector<Contact>> shares_;  // each helper thread's contacts, in pair order
 };
 
 // Farthest a body's surface can travel in dt: bounds the speculative margin.

@@ -49,7 +49,56 @@ bool clamp_to_disc(Real& j1, Real& j2, Real limit, Real slip = INFINITY) {
   return length_squared > slip * slip;
 }
 
+// One contact point's constraint, without its warm start.
+ContactConstraint make_constraint(const Contact& contact, const std::vector<Body>& bodies, const std::vector<BodyState>& states,
+                                  const std::vector<int>& slots, const ContactSolverSettings& settings, const Vec3& gravity,
+                                  const Softness& contact_soft, const Softness& static_soft) {
+  const Body& body_a = bodies[contact.body_a];
+  const Body& body_b = bodies[contact.body_b];
+  ContactConstraint c;
+  c.a = slots[contact.body_a];
+  c.b = slots[contact.body_b];
+  const BodyState& sa = states[c.a];
+  const BodyState& sb = states[c.b];
+  c.normal = contact.normal;
+  tangent_basis(c.normal, c.tangent1, c.tangent2);
+  c.anchor_a = contact.point - body_a.position;
+  c.anchor_b = contact.point - body_b.position;
+  c.adjusted_separation = contact.separation - (c.anchor_a - c.anchor_b).dot(c.normal);
+  c.ra_cross_n = c.anchor_a.cross(c.normal);
+  c.rb_cross_n = c.anchor_b.cross(c.normal);
+  c.angular_a = sa.inv_inertia * c.ra_cross_n;
+  c.angular_b = sb.inv_inertia * c.rb_cross_n;
+  c.normal_mass = safe_inverse(sa.inv_mass + sb.inv_mass + c.ra_cross_n.dot(c.angular_a) + c.rb_cross_n.dot(c.angular_b));
+  c.friction = settings.friction ? mix_friction(body_a.material.friction, body_b.material.friction) : 0;
+  c.restitution = mix_restitution(body_a.material.restitution, body_b.material.restitution);
+  c.softness = (sa.inv_mass == 0 || sb.inv_mass == 0) ? static_soft : contact_soft;
+  c.normal_acceleration = ((sa.inv_mass > 0 ? gravity : Vec3::Zero()) - (sb.inv_mass > 0 ? gravity : Vec3::Zero())).dot(c.normal);
+  return c;
+}
+
 }  // namespace
+
+void ContactSolver::plan(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, ThreadTeam& team) {
+  team_ = &team;
+  // Consecutive contacts of one pair (with one normal) form its manifold, of at most four points.
+  groups_.clear();
+  for (int i = 0; i < int(contacts.size()); ++i) {
+    const Contact& contact = contacts[i];
+    if (groups_.empty() || groups_.back().second - groups_.back().first == kMaxManifoldPoints ||
+        contacts[groups_.back().first].body_a != contact.body_a || contacts[groups_.back().first].body_b != contact.body_b ||
+        contacts[groups_.back().first].normal != contact.normal)
+      groups_.push_back({i, i});
+    ++groups_.back().second;
+  }
+  auto moving = [&](int body) { return !bodies[body].is_static() && bodies[body].awake ? body : -1; };
+  std::vector<SweepItem> items(groups_.size());
+  for (size_t k = 0; k < groups_.size(); ++k) {
+    const Contact& contact = contacts[groups_[k].first];
+    items[k] = {moving(contact.body_a), moving(contact.body_b), bodies[contact.body_a].position, bodies[contact.body_b].position};
+  }
+  schedule_.plan(items, int(bodies.size()), team.size());
+}
 
 void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                             const std::vector<BodyState>& states, const ContactSolverSettings& settings,
@@ -59,132 +108,149 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   const Softness contact_soft = make_softness(hertz, settings.contact_damping_ratio, h);
   // Contacts against static bodies can be stiffer: only one body moves (Box2D's staticSoftness).
   const Softness static_soft = make_softness(2 * hertz, settings.contact_damping_ratio, h);
-  constraints_.clear();
-  manifolds_.clear();
-  point_keys_.clear();
-  pair_keys_.clear();
-  constraints_.reserve(contacts.size());
-  for (const Contact& contact : contacts) {
-    const Body& body_a = bodies[contact.body_a];
-    const Body& body_b = bodies[contact.body_b];
-    const BodyState& sa = states[contact.body_a];
-    const BodyState& sb = states[contact.body_b];
-    ContactConstraint c;
-    c.a = contact.body_a;
-    c.b = contact.body_b;
-    c.normal = contact.normal;
-    tangent_basis(c.normal, c.tangent1, c.tangent2);
-    c.anchor_a = contact.point - body_a.position;
-    c.anchor_b = contact.point - body_b.position;
-    c.adjusted_separation = contact.separation - (c.anchor_a - c.anchor_b).dot(c.normal);
-    c.ra_cross_n = c.anchor_a.cross(c.normal);
-    c.rb_cross_n = c.anchor_b.cross(c.normal);
-    c.angular_a = sa.inv_inertia * c.ra_cross_n;
-    c.angular_b = sb.inv_inertia * c.rb_cross_n;
-    c.normal_mass = safe_inverse(sa.inv_mass + sb.inv_mass + c.ra_cross_n.dot(c.angular_a) + c.rb_cross_n.dot(c.angular_b));
-    c.friction = settings.friction ? mix_friction(body_a.material.friction, body_b.material.friction) : 0;
-    c.restitution = mix_restitution(body_a.material.restitution, body_b.material.restitution);
-    c.softness = (sa.inv_mass == 0 || sb.inv_mass == 0) ? static_soft : contact_soft;
-    c.normal_acceleration = ((sa.inv_mass > 0 ? gravity : Vec3::Zero()) - (sb.inv_mass > 0 ? gravity : Vec3::Zero())).dot(c.normal);
-    point_keys_.push_back(point_key(contact));
-    if (auto warm = warm_normal_.find(point_keys_.back()); warm != warm_normal_.end()) c.normal_impulse = warm->second;
-
-    // Consecutive contacts of one pair form its manifold (of at most four points).
-    if (manifolds_.empty() || manifolds_.back().a != c.a || manifolds_.back().b != c.b ||
-        manifolds_.back().count == kMaxManifoldPoints) {
-      ManifoldConstraint m;
-      m.a = c.a;
-      m.b = c.b;
-      m.first = int(constraints_.size());
-      manifolds_.push_back(m);
-    }
-    ++manifolds_.back().count;
-    constraints_.push_back(c);
+  // The constraints are laid out in the sweeps' order: a thread's share is then one block of memory.
+  const std::vector<int>& slots = schedule_.slots();
+  const std::vector<int>& order = schedule_.order();
+  manifolds_.resize(order.size());
+  constraints_.resize(contacts.size());
+  point_keys_.resize(contacts.size());
+  pair_keys_.resize(order.size());
+  constraint_of_contact_.resize(contacts.size());
+  first_of_step_.resize(order.size());
+  for (size_t step = 0, next = 0; step < order.size(); ++step) {
+    first_of_step_[step] = int(next);
+    for (int i = groups_[order[step]].first; i < groups_[order[step]].second; ++i) constraint_of_contact_[i] = int(next++);
   }
-
-  for (ManifoldConstraint& m : manifolds_) {
-    const BodyState& sa = states[m.a];
-    const BodyState& sb = states[m.b];
-    const ContactConstraint& first = constraints_[m.first];
-    Vec3 centre = Vec3::Zero();
-    for (int i = 0; i < m.count; ++i) centre += constraints_[m.first + i].anchor_a;
-    centre /= m.count;  // relative to A
-    m.centre_a = centre;
-    m.centre_b = centre + (first.anchor_b - first.anchor_a);
-    m.tangent_mass1 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent1));
-    m.tangent_mass2 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent2));
-    // How an impulse at point j changes the normal velocity at point i (eq. 13's denominator,
-    // generalised: its diagonal is the inverse of each point's normal mass).
-    for (int i = 0; i < m.count; ++i)
-      for (int j = 0; j < m.count; ++j) {
-        const ContactConstraint& ci = constraints_[m.first + i];
-        const ContactConstraint& cj = constraints_[m.first + j];
-        m.coupling[i][j] = (sa.inv_mass + sb.inv_mass) * ci.normal.dot(cj.normal) + ci.ra_cross_n.dot(cj.angular_a) + ci.rb_cross_n.dot(cj.angular_b);
+  // Built on this thread: a helper would have to fetch every body, state and contact from this
+  // core's cache (measured: twice as slow per manifold).
+  for (int step = 0; step < int(order.size()); ++step) {
+    {
+      const auto [first, end] = groups_[order[step]];
+      ManifoldConstraint& m = manifolds_[step];
+      m = ManifoldConstraint{};
+      m.a = slots[contacts[first].body_a];
+      m.b = slots[contacts[first].body_b];
+      m.first = first_of_step_[step];
+      m.count = end - first;
+      for (int i = 0; i < m.count; ++i) {
+        ContactConstraint& c = constraints_[m.first + i];
+        c = make_constraint(contacts[first + i], bodies, states, slots, settings, gravity, contact_soft, static_soft);
+        point_keys_[m.first + i] = point_key(contacts[first + i]);
+        if (auto warm = warm_normal_.find(point_keys_[m.first + i]); warm != warm_normal_.end()) c.normal_impulse = warm->second;
       }
-    m.twist_mass = safe_inverse(first.normal.dot((sa.inv_inertia + sb.inv_inertia) * first.normal));
-    m.ra_cross_t1 = m.centre_a.cross(first.tangent1);
-    m.ra_cross_t2 = m.centre_a.cross(first.tangent2);
-    m.rb_cross_t1 = m.centre_b.cross(first.tangent1);
-    m.rb_cross_t2 = m.centre_b.cross(first.tangent2);
-    m.turn_a1 = sa.inv_inertia * m.ra_cross_t1;
-    m.turn_a2 = sa.inv_inertia * m.ra_cross_t2;
-    m.turn_b1 = sb.inv_inertia * m.rb_cross_t1;
-    m.turn_b2 = sb.inv_inertia * m.rb_cross_t2;
-    m.twist_a = sa.inv_inertia * first.normal;
-    m.twist_b = sb.inv_inertia * first.normal;
-    m.twist_radius = 0;
-    for (int i = 0; i < m.count; ++i) m.twist_radius += (constraints_[m.first + i].anchor_a - centre).norm() / m.count;
-    const Body& body_a = bodies[m.a];
-    const Body& body_b = bodies[m.b];
-    m.local_anchor_a = body_a.orientation.conjugate() * m.centre_a;
-    m.local_anchor_b = body_b.orientation.conjugate() * m.centre_b;
-    pair_keys_.push_back(pair_key(m.a, m.b));
-    if (auto warm = warm_friction_.find(pair_keys_.back()); warm != warm_friction_.end()) {
-      m.tangent_impulse1 = warm->second.tangent1;
-      m.tangent_impulse2 = warm->second.tangent2;
-      m.twist_impulse = warm->second.twist;
-      if (warm->second.anchored) {
-        m.local_anchor_a = warm->second.local_anchor_a;
-        m.local_anchor_b = warm->second.local_anchor_b;
-        const Vec3 offset = (body_a.position + body_a.orientation * m.local_anchor_a) - (body_b.position + body_b.orientation * m.local_anchor_b);
-        m.drift = offset - offset.dot(first.normal) * first.normal;
-      }
+      prepare_manifold(m, bodies[contacts[first].body_a], bodies[contacts[first].body_b], states);
+      pair_keys_[step] = pair_key(contacts[first].body_a, contacts[first].body_b);
+      if (auto warm = warm_friction_.find(pair_keys_[step]); warm != warm_friction_.end()) warm_start_friction(m, warm->second, bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
     }
   }
 }
 
-void ContactSolver::warm_start(std::vector<BodyState>& states) const {
-  for (const ManifoldConstraint& m : manifolds_) {
-    BodyState& sa = states[m.a];
-    BodyState& sb = states[m.b];
-    for (int i = 0; i < m.count; ++i) {
-      const ContactConstraint& c = constraints_[m.first + i];
-      sa.v += (sa.inv_mass * c.normal_impulse) * c.normal;
-      sa.w += c.normal_impulse * c.angular_a;
-      sb.v -= (sb.inv_mass * c.normal_impulse) * c.normal;
-      sb.w -= c.normal_impulse * c.angular_b;
+// The friction rows of a manifold whose points are built.
+void ContactSolver::prepare_manifold(ManifoldConstraint& m, const Body& body_a, const Body& body_b, const std::vector<BodyState>& states) const {
+  const BodyState& sa = states[m.a];
+  const BodyState& sb = states[m.b];
+  const ContactConstraint& first = constraints_[m.first];
+  Vec3 centre = Vec3::Zero();
+  for (int i = 0; i < m.count; ++i) centre += constraints_[m.first + i].anchor_a;
+  centre /= m.count;  // relative to A
+  m.centre_a = centre;
+  m.centre_b = centre + (first.anchor_b - first.anchor_a);
+  m.tangent_mass1 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent1));
+  m.tangent_mass2 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent2));
+  // How an impulse at point j changes the normal velocity at point i (eq. 13's denominator,
+  // generalised: its diagonal is the inverse of each point's normal mass).
+  for (int i = 0; i < m.count; ++i)
+    for (int j = 0; j < m.count; ++j) {
+      const ContactConstraint& ci = constraints_[m.first + i];
+      const ContactConstraint& cj = constraints_[m.first + j];
+      m.coupling[i][j] = (sa.inv_mass + sb.inv_mass) * ci.normal.dot(cj.normal) + ci.ra_cross_n.dot(cj.angular_a) + ci.rb_cross_n.dot(cj.angular_b);
     }
-    apply_friction(m, sa, sb, m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse);
-  }
+  m.twist_mass = safe_inverse(first.normal.dot((sa.inv_inertia + sb.inv_inertia) * first.normal));
+  m.ra_cross_t1 = m.centre_a.cross(first.tangent1);
+  m.ra_cross_t2 = m.centre_a.cross(first.tangent2);
+  m.rb_cross_t1 = m.centre_b.cross(first.tangent1);
+  m.rb_cross_t2 = m.centre_b.cross(first.tangent2);
+  m.turn_a1 = sa.inv_inertia * m.ra_cross_t1;
+  m.turn_a2 = sa.inv_inertia * m.ra_cross_t2;
+  m.turn_b1 = sb.inv_inertia * m.rb_cross_t1;
+  m.turn_b2 = sb.inv_inertia * m.rb_cross_t2;
+  m.twist_a = sa.inv_inertia * first.normal;
+  m.twist_b = sb.inv_inertia * first.normal;
+  m.twist_radius = 0;
+  for (int i = 0; i < m.count; ++i) m.twist_radius += (constraints_[m.first + i].anchor_a - centre).norm() / m.count;
+  m.local_anchor_a = body_a.orientation.conjugate() * m.centre_a;
+  m.local_anchor_b = body_b.orientation.conjugate() * m.centre_b;
+}
+
+// Last step's friction impulses, and its anchor unless the pair slipped.
+void ContactSolver::warm_start_friction(ManifoldConstraint& m, const WarmFriction& warm, const Body& body_a, const Body& body_b) const {
+  m.tangent_impulse1 = warm.tangent1;
+  m.tangent_impulse2 = warm.tangent2;
+  m.twist_impulse = warm.twist;
+  if (!warm.anchored) return;
+  m.local_anchor_a = warm.local_anchor_a;
+  m.local_anchor_b = warm.local_anchor_b;
+  const Vec3 offset = (body_a.position + body_a.orientation * m.local_anchor_a) - (body_b.position + body_b.orientation * m.local_anchor_b);
+  const Vec3& normal = constraints_[m.first].normal;
+  m.drift = offset - offset.dot(normal) * normal;
+}
+
+void ContactSolver::warm_start(std::vector<BodyState>& states) {
+  schedule_.sweep(*team_, [&](int index) { warm_start_manifold(index, states); });
 }
 
 void ContactSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_bias) {
-  for (ManifoldConstraint& m : manifolds_) {
-    BodyState& sa = states[m.a];
-    BodyState& sb = states[m.b];
-    if (use_bias && bounce(m, sa, sb, 1 / inv_h)) continue;
-    solve_normals(m, states, inv_h, use_bias);
-    if (constraints_[m.first].friction == 0) continue;
-    Real normal_sum = 0;
-    for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].normal_impulse;
-    solve_friction(m, sa, sb, normal_sum, use_bias);
+  schedule_.sweep(*team_, [&](int index) { solve_manifold(index, states, inv_h, use_bias); });
+}
+
+void ContactSolver::apply_bounce_shifts(std::vector<BodyState>& states) {
+  schedule_.sweep(*team_, [&](int index) { shift_bounce(index, states); });
+}
+
+void ContactSolver::end_substep() {
+  schedule_.for_each_step(*team_, [&](int index) { add_to_totals(index); });
+}
+
+void ContactSolver::warm_start_manifold(int index, std::vector<BodyState>& states) const {
+  const ManifoldConstraint& m = manifolds_[index];
+  BodyState& sa = states[m.a];
+  BodyState& sb = states[m.b];
+  for (int i = 0; i < m.count; ++i) {
+    const ContactConstraint& c = constraints_[m.first + i];
+    if (sa.inv_mass > 0) {
+      sa.v += (sa.inv_mass * c.normal_impulse) * c.normal;
+      sa.w += c.normal_impulse * c.angular_a;
+    }
+    if (sb.inv_mass > 0) {
+      sb.v -= (sb.inv_mass * c.normal_impulse) * c.normal;
+      sb.w -= c.normal_impulse * c.angular_b;
+    }
   }
+  apply_friction(m, sa, sb, m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse);
+}
+
+void ContactSolver::solve_manifold(int index, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
+  ManifoldConstraint& m = manifolds_[index];
+  BodyState& sa = states[m.a];
+  BodyState& sb = states[m.b];
+  if (use_bias && bounce(m, sa, sb, 1 / inv_h)) return;
+  solve_normals(m, states, inv_h, use_bias);
+  if (constraints_[m.first].friction == 0) return;
+  Real normal_sum = 0;
+  for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].normal_impulse;
+  solve_friction(m, sa, sb, normal_sum, use_bias);
 }
 
 void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
   BodyState& sa = states[m.a];
   BodyState& sb = states[m.b];
   const Vec3 dv = sa.v - sb.v;
+  // The points share the normal: n . (dq r) = (dq^-1 n) . r turns the normal back once per body
+  // instead of turning every anchor (current_separation, for the manifold).
+  const Vec3& normal = constraints_[m.first].normal;
+  const Real moved = (sa.dp - sb.dp).dot(normal);
+  const Vec3 normal_in_a = rotate(sa.dq.conjugate(), normal);
+  const Vec3 normal_in_b = rotate(sb.dq.conjugate(), normal);
   // Each point's target, from its separation now (positions do not change during the passes),
   // and its normal velocity now.
   struct Row { ContactConstraint* c; int point; Real vn, bias, mass, impulse_scale, impulse, start; };
@@ -192,7 +258,7 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
   int row_count = 0;
   for (int i = 0; i < m.count; ++i) {
     ContactConstraint& c = constraints_[m.first + i];
-    const Real separation = current_separation(c, sa, sb);
+    const Real separation = moved + normal_in_a.dot(c.anchor_a) - normal_in_b.dot(c.anchor_b) + c.adjusted_separation;
     const Real vn = dv.dot(c.normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n);
     Row row{&c, i, vn, 0, c.normal_mass, 0, c.normal_impulse, c.normal_impulse};
     if (separation > 0) {
@@ -235,20 +301,28 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
     turn_a += applied * c.angular_a;
     turn_b += applied * c.angular_b;
   }
-  sa.v += sa.inv_mass * linear;
-  sa.w += turn_a;
-  sb.v -= sb.inv_mass * linear;
-  sb.w -= turn_b;
+  if (sa.inv_mass > 0) {
+    sa.v += sa.inv_mass * linear;
+    sa.w += turn_a;
+  }
+  if (sb.inv_mass > 0) {
+    sb.v -= sb.inv_mass * linear;
+    sb.w -= turn_b;
+  }
 }
 
 // Tangent impulses j1, j2 at the points' centroid and a twist about the normal: +j on A, -j on B.
 void ContactSolver::apply_friction(const ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real j1, Real j2, Real twist) const {
   const ContactConstraint& first = constraints_[m.first];
   const Vec3 linear = j1 * first.tangent1 + j2 * first.tangent2;
-  sa.v += sa.inv_mass * linear;
-  sa.w += j1 * m.turn_a1 + j2 * m.turn_a2 + twist * m.twist_a;
-  sb.v -= sb.inv_mass * linear;
-  sb.w -= j1 * m.turn_b1 + j2 * m.turn_b2 + twist * m.twist_b;
+  if (sa.inv_mass > 0) {
+    sa.v += sa.inv_mass * linear;
+    sa.w += j1 * m.turn_a1 + j2 * m.turn_a2 + twist * m.twist_a;
+  }
+  if (sb.inv_mass > 0) {
+    sb.v -= sb.inv_mass * linear;
+    sb.w -= j1 * m.turn_b1 + j2 * m.turn_b2 + twist * m.twist_b;
+  }
 }
 
 // Coulomb friction at the points' centroid, within the disc of radius mu times their total
@@ -256,6 +330,14 @@ void ContactSolver::apply_friction(const ManifoldConstraint& m, BodyState& sa, B
 void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum, bool use_bias) {
   const ContactConstraint& first = constraints_[m.first];
   const Real limit = first.friction * normal_sum;
+  if (limit == 0) {
+    // Not pressed together (a speculative pair): no friction, and nothing to anchor.
+    m.slipped = true;
+    if (m.tangent_impulse1 == 0 && m.tangent_impulse2 == 0 && m.twist_impulse == 0) return;
+    apply_friction(m, sa, sb, -m.tangent_impulse1, -m.tangent_impulse2, -m.twist_impulse);
+    m.tangent_impulse1 = m.tangent_impulse2 = m.twist_impulse = 0;
+    return;
+  }
   const Vec3 dv = sa.v - sb.v;
   Real v1 = dv.dot(first.tangent1) + sa.w.dot(m.ra_cross_t1) - sb.w.dot(m.rb_cross_t1);
   Real v2 = dv.dot(first.tangent2) + sa.w.dot(m.ra_cross_t2) - sb.w.dot(m.rb_cross_t2);
@@ -378,27 +460,25 @@ bool ContactSolver::bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, 
 
 // The shift is taken back as a time shift of the pair: each body moves along its own velocity for
 // the same dt. That changes neither momentum nor angular momentum (sum of v dt x m v = 0).
-void ContactSolver::apply_bounce_shifts(std::vector<BodyState>& states) {
-  for (ManifoldConstraint& m : manifolds_) {
-    if (m.bounce_shift == 0) continue;
-    BodyState& sa = states[m.a];
-    BodyState& sb = states[m.b];
-    const Real parting = (sa.v - sb.v).dot(constraints_[m.first].normal);
-    if (parting > 1e-6) {
-      const Real dt = m.bounce_shift / parting;
-      if (sa.inv_mass > 0) sa.dp += sa.v * dt;
-      if (sb.inv_mass > 0) sb.dp += sb.v * dt;
-    }
-    m.bounce_shift = 0;
+void ContactSolver::shift_bounce(int index, std::vector<BodyState>& states) {
+  ManifoldConstraint& m = manifolds_[index];
+  if (m.bounce_shift == 0) return;
+  BodyState& sa = states[m.a];
+  BodyState& sb = states[m.b];
+  const Real parting = (sa.v - sb.v).dot(constraints_[m.first].normal);
+  if (parting > 1e-6) {
+    const Real dt = m.bounce_shift / parting;
+    if (sa.inv_mass > 0) sa.dp += sa.v * dt;
+    if (sb.inv_mass > 0) sb.dp += sb.v * dt;
   }
+  m.bounce_shift = 0;
 }
 
-void ContactSolver::end_substep() {
-  for (ContactConstraint& c : constraints_) c.total_normal_impulse += c.normal_impulse;
-  for (ManifoldConstraint& m : manifolds_) {
-    m.total_tangent_impulse1 += m.tangent_impulse1;
-    m.total_tangent_impulse2 += m.tangent_impulse2;
-  }
+void ContactSolver::add_to_totals(int index) {
+  ManifoldConstraint& m = manifolds_[index];
+  for (int i = 0; i < m.count; ++i) constraints_[m.first + i].total_normal_impulse += constraints_[m.first + i].normal_impulse;
+  m.total_tangent_impulse1 += m.tangent_impulse1;
+  m.total_tangent_impulse2 += m.tangent_impulse2;
 }
 
 void ContactSolver::store_impulses() {

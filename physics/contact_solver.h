@@ -6,6 +6,8 @@
 #include "physics/body.h"
 #include "physics/contact.h"
 #include "physics/solver_state.h"
+#include "physics/sweep_schedule.h"
+#include "physics/thread_team.h"
 
 #include <cstdint>
 #include <unordered_map>
@@ -28,7 +30,7 @@ Real mix_restitution(Real a, Real b);
 Real mix_friction(Real a, Real b);
 
 // One contact point.
-struct ContactConstraint {
+struct alignas(64) ContactConstraint {  // a cache line of its own at each end: threads solve neighbours
   int a = -1, b = -1;
   Vec3 normal, tangent1, tangent2;
   Vec3 anchor_a, anchor_b;             // contact point relative to each centre, at step start
@@ -52,7 +54,7 @@ inline Real current_separation(const ContactConstraint& c, const BodyState& sa, 
 }
 
 // The points between one pair of bodies, and their shared friction.
-struct ManifoldConstraint {
+struct alignas(64) ManifoldConstraint {
   int a = -1, b = -1;
   int first = 0, count = 0;            // its points in the constraint list
   Vec3 centre_a = Vec3::Zero(), centre_b = Vec3::Zero();  // the points' centroid relative to each centre
@@ -77,20 +79,43 @@ struct ManifoldConstraint {
 
 class ContactSolver {
  public:
-  // Builds the constraints of this step's contacts, warm started from the last step's impulses.
+  // Plans this step's sweeps over the contacts' manifolds and how `team` shares them; slots() then
+  // says where each body's state goes (the solver's indices, in states and in the constraints).
+  void plan(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, ThreadTeam& team);
+  const std::vector<int>& slots() const { return schedule_.slots(); }
+  // Builds the constraints of the planned contacts, warm started from the last step's impulses.
   void prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                const std::vector<BodyState>& states, const ContactSolverSettings& settings,
                const Vec3& gravity, Real h);
-  void warm_start(std::vector<BodyState>& states) const;
+  void warm_start(std::vector<BodyState>& states);
   void solve(std::vector<BodyState>& states, Real inv_h, bool use_bias);
   void apply_bounce_shifts(std::vector<BodyState>& states);  // after integrating positions
   void end_substep();     // adds this sub-step's impulses to the step totals
+  // f(slot) for every body's slot, each on the thread whose sweeps move it (its data stays in that core).
+  template <class F>
+  void for_each_slot(F&& f) { schedule_.for_each_slot(*team_, f); }
+
+  // One whole sub-step for a world without joints: the calls above in the same order, with
+  // integrate_velocity(slot) before and integrate_position(slot) halfway, all in one job of the
+  // team (its threads meet at a barrier between the phases instead of being woken for each).
+  template <class IntegrateVelocity, class IntegratePosition>
+  void substep(std::vector<BodyState>& states, Real h, IntegrateVelocity&& integrate_velocity,
+               IntegratePosition&& integrate_position);
   void store_impulses();  // keeps them for warm starting the next step
 
+  // In the sweeps' order, not the contacts' (constraint_of() maps one to the other).
   std::vector<ContactConstraint>& constraints() { return constraints_; }
   const std::vector<ContactConstraint>& constraints() const { return constraints_; }
+  const ContactConstraint& constraint_of(int contact) const { return constraints_[constraint_of_contact_[contact]]; }
 
  private:
+  struct WarmFriction { Real tangent1, tangent2, twist; Vec3 local_anchor_a, local_anchor_b; bool anchored; };
+  void prepare_manifold(ManifoldConstraint& m, const Body& body_a, const Body& body_b, const std::vector<BodyState>& states) const;
+  void warm_start_friction(ManifoldConstraint& m, const WarmFriction& warm, const Body& body_a, const Body& body_b) const;
+  void warm_start_manifold(int index, std::vector<BodyState>& states) const;
+  void solve_manifold(int index, std::vector<BodyState>& states, Real inv_h, bool use_bias);
+  void shift_bounce(int index, std::vector<BodyState>& states);
+  void add_to_totals(int index);
   void solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias);
   void solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum, bool use_bias);
   void apply_friction(const ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real j1, Real j2, Real twist) const;
@@ -98,11 +123,39 @@ class ContactSolver {
 
   std::vector<ContactConstraint> constraints_;
   std::vector<ManifoldConstraint> manifolds_;
+  std::vector<std::pair<int, int>> groups_;  // each manifold's contacts, [first, end)
+  std::vector<int> constraint_of_contact_;
+  std::vector<int> first_of_step_;  // each manifold's first constraint
   std::vector<uint64_t> point_keys_, pair_keys_;
-  struct WarmFriction { Real tangent1, tangent2, twist; Vec3 local_anchor_a, local_anchor_b; bool anchored; };
   std::unordered_map<uint64_t, Real> warm_normal_;           // by pair and feature
   std::unordered_map<uint64_t, WarmFriction> warm_friction_;  // by pair
   ContactSolverSettings settings_;
+  ThreadTeam* team_ = nullptr;
+  SweepSchedule schedule_;
 };
+
+template <class IntegrateVelocity, class IntegratePosition>
+void ContactSolver::substep(std::vector<BodyState>& states, Real h, IntegrateVelocity&& integrate_velocity,
+                            IntegratePosition&& integrate_position) {
+  const uint64_t epoch = schedule_.new_epochs(4);
+  const bool parallel = schedule_.parallel();
+  auto meet = [&] { if (parallel) team_->barrier(); };
+  schedule_.run(*team_, [&](int thread) {
+    schedule_.slot_share(thread, integrate_velocity);
+    meet();
+    schedule_.sweep_share(thread, epoch, [&](int index) { warm_start_manifold(index, states); });
+    meet();
+    schedule_.sweep_share(thread, epoch + 1, [&](int index) { solve_manifold(index, states, 1 / h, true); });
+    meet();
+    schedule_.slot_share(thread, integrate_position);
+    meet();
+    schedule_.sweep_share(thread, epoch + 2, [&](int index) { shift_bounce(index, states); });
+    meet();
+    schedule_.sweep_share(thread, epoch + 3, [&](int index) {
+      solve_manifold(index, states, 1 / h, false);
+      add_to_totals(index);  // the relax pass is the sub-step's last word on this manifold
+    });
+  });
+}
 
 }  // namespace impulse::physics

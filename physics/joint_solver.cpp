@@ -58,16 +58,16 @@ Joint make_joint(const JointDef& def, const std::vector<Body>& bodies) {
   return joint;
 }
 
-void JointSolver::prepare(std::vector<Joint>& joints, const std::vector<Body>& bodies, Real hertz,
-                          Real damping_ratio, Real h) {
+void JointSolver::prepare(std::vector<Joint>& joints, const std::vector<Body>& bodies, const std::vector<int>& slots,
+                          Real hertz, Real damping_ratio, Real h) {
   softness_ = make_softness(hertz, damping_ratio, h);
   const int world = int(bodies.size());
   prepared_.clear();
   for (Joint& joint : joints) {
     Prepared p;
     p.joint = &joint;
-    p.a = joint.body_a == kWorld ? world : joint.body_a;
-    p.b = joint.body_b == kWorld ? world : joint.body_b;
+    p.a = joint.body_a == kWorld ? world : slots[joint.body_a];
+    p.b = joint.body_b == kWorld ? world : slots[joint.body_b];
     const Quat qa = joint.body_a == kWorld ? Quat::Identity() : bodies[joint.body_a].orientation;
     const Quat qb = joint.body_b == kWorld ? Quat::Identity() : bodies[joint.body_b].orientation;
     const Vec3 ca = joint.body_a == kWorld ? Vec3::Zero() : bodies[joint.body_a].position;

@@ -15,7 +15,9 @@ Joint make_joint(const JointDef& def, const std::vector<Body>& bodies);
 class JointSolver {
  public:
   // `states` has one entry per body and, last, a static entry standing for the world.
-  void prepare(std::vector<Joint>& joints, const std::vector<Body>& bodies, Real hertz, Real damping_ratio, Real h);
+  // `slots`: where each body's state is (ContactSolver::slots()); the world's is after them all.
+  void prepare(std::vector<Joint>& joints, const std::vector<Body>& bodies, const std::vector<int>& slots, Real hertz,
+               Real damping_ratio, Real h);
   void warm_start(std::vector<BodyState>& states) const;
   void solve(std::vector<BodyState>& states, Real inv_h, bool use_bias);  // accumulates into the joints
 

@@ -5,7 +5,7 @@
 
 namespace impulse::physics {
 
-struct BodyState {
+struct alignas(64) BodyState {
   Vec3 v = Vec3::Zero();               // linear velocity
   Vec3 w = Vec3::Zero();               // angular velocity
   Vec3 dp = Vec3::Zero();              // displacement since the step began
@@ -26,10 +26,14 @@ inline Vec3 relative_velocity(const BodyState& sa, const BodyState& sb, const Ve
 // +P on A at ra and -P on B at rb, linear and angular (eq. 14, corrected: the world-space inverse
 // inertia tensor, and minus for B).
 inline void apply_impulse(BodyState& sa, BodyState& sb, const Vec3& ra, const Vec3& rb, const Vec3& impulse) {
-  sa.v += sa.inv_mass * impulse;
-  sa.w += sa.inv_inertia * ra.cross(impulse);
-  sb.v -= sb.inv_mass * impulse;
-  sb.w -= sb.inv_inertia * rb.cross(impulse);
+  if (sa.inv_mass > 0) {
+    sa.v += sa.inv_mass * impulse;
+    sa.w += sa.inv_inertia * ra.cross(impulse);
+  }
+  if (sb.inv_mass > 0) {
+    sb.v -= sb.inv_mass * impulse;
+    sb.w -= sb.inv_inertia * rb.cross(impulse);
+  }
 }
 
 // Inverse of the effective mass along direction d at anchors ra, rb:

@@ -10,6 +10,8 @@ namespace impulse::physics {
 World::World(WorldSettings settings) : settings_(settings) {
   if (!(settings_.time_step > 0)) throw std::invalid_argument("time_step must be > 0");
   if (settings_.substeps < 1) throw std::invalid_argument("substeps must be >= 1");
+  if (settings_.threads < 0) throw std::invalid_argument("threads must be >= 0 (0: one per core)");
+  team_ = std::make_unique<ThreadTeam>(settings_.threads > 0 ? settings_.threads : ThreadTeam::default_size());
 }
 
 int World::add_body(const BodyDef& def) {
@@ -29,10 +31,11 @@ const StepRecord& World::step() {
 
   for (Body& body : bodies_) body.refresh_world_inertia();
   find_contacts();
+  contact_solver_.plan(contacts_, bodies_, *team_);
   load_states();
   contact_solver_.prepare(contacts_, bodies_, states_, settings_.contact, settings_.gravity, h);
   const Real joint_step = settings_.method == ResponseMethod::workshop || settings_.method == ResponseMethod::projection ? dt : h;
-  joint_solver_.prepare(joints_, bodies_, settings_.joint_hertz, settings_.joint_damping_ratio, joint_step);
+  joint_solver_.prepare(joints_, bodies_, contact_solver_.slots(), settings_.joint_hertz, settings_.joint_damping_ratio, joint_step);
   switch (settings_.method) {
     case ResponseMethod::impulse: solve_impulse(h); break;
     case ResponseMethod::workshop: solve_workshop(dt); break;
@@ -52,6 +55,13 @@ const StepRecord& World::step() {
 // Box2D v3's soft step: per sub-step, integrate velocities, warm start, solve with the soft
 // position bias (bouncing the contacts that meet), integrate positions, then relax without bias.
 void World::solve_impulse(Real h) {
+  if (joints_.empty()) {
+    for (int i = 0; i < settings_.substeps; ++i)
+      contact_solver_.substep(states_, h, [&](int slot) { integrate_velocity(states_[slot], h); },
+                              [&](int slot) { integrate_position(states_[slot], h); });
+    contact_solver_.store_impulses();
+    return;
+  }
   for (int i = 0; i < settings_.substeps; ++i) {
     integrate_velocities(h);
     joint_solver_.warm_start(states_);
@@ -109,16 +119,17 @@ void World::find_contacts() {
   do {
     awake_.resize(bodies_.size());
     for (size_t i = 0; i < bodies_.size(); ++i) awake_[i] = !bodies_[i].is_static() && bodies_[i].awake;
-    contact_finder_.find(bodies_, awake_, settings_.time_step, 4 * settings_.linear_slop, contacts_);
+    contact_finder_.find(bodies_, awake_, settings_.time_step, 4 * settings_.linear_slop, *team_, contacts_);
   } while (islands_.wake_touched(bodies_, contacts_, links_, settings_.linear_slop, settings_.sleep));
 }
 
 void World::load_states() {
   states_.resize(bodies_.size() + 1);
   states_.back() = BodyState{};  // the world, for joints fixed in it: static
+  const std::vector<int>& slots = contact_solver_.slots();
   for (size_t i = 0; i < bodies_.size(); ++i) {
     const Body& body = bodies_[i];
-    BodyState& s = states_[i];
+    BodyState& s = states_[slots[i]];
     s.v = body.velocity;
     s.w = body.angular_velocity;
     s.dp.setZero();
@@ -133,12 +144,13 @@ void World::load_states() {
 }
 
 void World::integrate_velocities(Real h) {
-  const Vec3 dv = settings_.gravity * h;
-  for (BodyState& s : states_) {
-    if (s.inv_mass == 0) continue;
-    s.v += dv;
-    if (s.gyroscopic) s.w = gyroscopic_step(s, h);
-  }
+  contact_solver_.for_each_slot([&](int slot) { integrate_velocity(states_[slot], h); });
+}
+
+void World::integrate_velocity(BodyState& s, Real h) const {
+  if (s.inv_mass == 0) return;
+  s.v += settings_.gravity * h;
+  if (s.gyroscopic) s.w = gyroscopic_step(s, h);
 }
 
 // Torque-free rotation I dw/dt = -w x I w, one implicit Euler step solved by one Newton step in
@@ -155,21 +167,23 @@ Vec3 World::gyroscopic_step(const BodyState& s, Real h) {
 }
 
 void World::integrate_positions(Real h) {
-  for (BodyState& s : states_) {
-    if (s.inv_mass == 0) continue;
-    s.dp += s.v * h;
-    // dq' = 1/2 (0, w) dq, one explicit step, renormalised.
-    const Quat spin(0, s.w.x() * h / 2, s.w.y() * h / 2, s.w.z() * h / 2);
-    s.dq.coeffs() += (spin * s.dq).coeffs();
-    s.dq.normalize();
-  }
+  contact_solver_.for_each_slot([&](int slot) { integrate_position(states_[slot], h); });
+}
+
+void World::integrate_position(BodyState& s, Real h) {
+  if (s.inv_mass == 0) return;
+  s.dp += s.v * h;
+  // dq' = 1/2 (0, w) dq, one explicit step, renormalised.
+  const Quat spin(0, s.w.x() * h / 2, s.w.y() * h / 2, s.w.z() * h / 2);
+  s.dq.coeffs() += (spin * s.dq).coeffs();
+  s.dq.normalize();
 }
 
 void World::store_states() {
   for (size_t i = 0; i < bodies_.size(); ++i) {
     Body& body = bodies_[i];
     if (body.is_static() || !body.awake) continue;
-    const BodyState& s = states_[i];
+    const BodyState& s = states_[contact_solver_.slots()[i]];
     body.velocity = s.v;
     body.angular_velocity = s.w;
     body.position += s.dp;
@@ -190,10 +204,9 @@ void World::fill_record() {
   record_.step = step_count_;
   record_.time = time_;
   record_.contacts.clear();
-  const auto& constraints = contact_solver_.constraints();
   for (size_t i = 0; i < contacts_.size(); ++i) {
     const Contact& contact = contacts_[i];
-    const ContactConstraint& c = constraints[i];
+    const ContactConstraint& c = contact_solver_.constraint_of(int(i));
     if (contact.separation > settings_.linear_slop && c.total_normal_impulse == 0) continue;
     record_.contacts.push_back({contact.body_a, contact.body_b, contact.point, contact.normal, contact.penetration(),
                                 c.total_normal_impulse,

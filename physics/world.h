@@ -8,8 +8,10 @@
 #include "physics/contact_solver.h"
 #include "physics/response_method.h"
 #include "physics/step_record.h"
+#include "physics/thread_team.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace impulse::physics {
@@ -27,6 +29,8 @@ struct WorldSettings {
   SleepSettings sleep;
   Real joint_hertz = 60;           // stiffness of the joints' position correction
   Real joint_damping_ratio = 2;
+  int threads = 0;                 // threads that share the solver's sweeps; 0: one per core. The
+                                   // results are the same, bit for bit, for any count.
 };
 
 class World {
@@ -62,6 +66,8 @@ class World {
   void solve_joints(Real h, bool use_bias);
   void load_states();
   void integrate_velocities(Real h);
+  void integrate_velocity(BodyState& s, Real h) const;
+  static void integrate_position(BodyState& s, Real h);
   static Vec3 gyroscopic_step(const BodyState& s, Real h);
   void integrate_positions(Real h);
   void store_states();
@@ -79,6 +85,7 @@ class World {
   JointSolver joint_solver_;
   std::vector<std::pair<int, int>> links_;  // body pairs joined by joints, for the islands
   ContactSolver contact_solver_;
+  std::unique_ptr<ThreadTeam> team_;  // on the heap: the solver keeps its address, and World can move
   StepRecord record_;
   Real time_ = 0;
   int64_t step_count_ = 0;

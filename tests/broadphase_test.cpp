@@ -97,17 +97,21 @@ TEST(ContactFinder, SameContactsAsAllPairs) {
         collide(bodies[i], i, bodies[j], j, base_margin + motion_bound(bodies[i], dt) + motion_bound(bodies[j], dt), expected);
   ASSERT_GT(expected.size(), 500u);
 
-  ContactFinder finder;
-  std::vector<Contact> found;
-  finder.find(bodies, awake, dt, base_margin, found);
-  ASSERT_EQ(found.size(), expected.size());
-  for (size_t k = 0; k < found.size(); ++k) {
-    EXPECT_EQ(found[k].body_a, expected[k].body_a) << k;
-    EXPECT_EQ(found[k].body_b, expected[k].body_b) << k;
-    EXPECT_EQ(found[k].feature, expected[k].feature) << k;
-    EXPECT_EQ(found[k].point, expected[k].point) << k;
-    EXPECT_EQ(found[k].normal, expected[k].normal) << k;
-    EXPECT_EQ(found[k].separation, expected[k].separation) << k;
+  // However many threads share the narrow phase (each takes a run of pairs).
+  for (int threads : {1, 2, 3}) {
+    ThreadTeam team(threads);
+    ContactFinder finder;
+    std::vector<Contact> found;
+    finder.find(bodies, awake, dt, base_margin, team, found);
+    ASSERT_EQ(found.size(), expected.size()) << threads << " threads";
+    for (size_t k = 0; k < found.size(); ++k) {
+      EXPECT_EQ(found[k].body_a, expected[k].body_a) << k;
+      EXPECT_EQ(found[k].body_b, expected[k].body_b) << k;
+      EXPECT_EQ(found[k].feature, expected[k].feature) << k;
+      EXPECT_EQ(found[k].point, expected[k].point) << k;
+      EXPECT_EQ(found[k].normal, expected[k].normal) << k;
+      EXPECT_EQ(found[k].separation, expected[k].separation) << k;
+    }
   }
 }
 

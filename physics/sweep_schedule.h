@@ -1,0 +1,139 @@
+// The order of a Gauss-Seidel sweep over the manifolds, and how the threads of a ThreadTeam share
+// it without changing a bit of the result.
+//
+// A large set is cut in two along its longest axis (nested dissection, one level): first the
+// manifolds that join bodies on both sides, then those on the left, then those on the right. The
+// order depends on the bodies only, never on the thread count, so one thread and many give the same
+// results. Threads share the sweep by parts (the crossing and left manifolds, the right ones); before
+// each manifold a thread waits until the manifolds before it in the order that move one of its
+// bodies are done, so every body receives its impulses in exactly the sweep's order. The two sides
+// touch different bodies: the threads wait on each other only at the start, for the crossing ones.
+#pragma once
+#include "physics/math.h"
+#include "physics/thread_team.h"
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace impulse::physics {
+
+// One constraint of the sweep: its two bodies (-1 for one that does not move) and their positions.
+struct SweepItem {
+  int a = -1, b = -1;
+  Vec3 position_a = Vec3::Zero(), position_b = Vec3::Zero();
+};
+
+class SweepSchedule {
+ public:
+  // Orders the sweeps over `items` (given in their natural order), shares them among `threads`
+  // and gives each of the `body_count` bodies its slot.
+  void plan(const std::vector<SweepItem>& items, int body_count, int threads);
+  bool parallel() const { return lists_.size() > 1; }
+  // The items in the sweeps' order; sweep() then names them by their place in it.
+  const std::vector<int>& order() const { return order_; }
+
+  // Where each body's solver state goes: each thread's bodies together, so that no core's
+  // prefetcher keeps pulling in lines that the other core is writing. The identity when serial.
+  const std::vector<int>& slots() const { return slot_of_body_; }
+
+  // Sweeps take consecutive epochs; a thread's share of sweep `epoch` waits only for that sweep.
+  uint64_t new_epochs(int count) {
+    const uint64_t first = epoch_ + 1;
+    epoch_ += uint64_t(count);
+    return first;
+  }
+  // `thread`'s share of a sweep: solve(step) for its steps, in order, each once the steps before it
+  // that move the same bodies are done (on one thread: every step). Threads beyond the plan's do nothing.
+  template <class Solve>
+  void sweep_share(int thread, uint64_t epoch, Solve&& solve) const;
+  // f(step) or f(slot) for `thread`'s steps or bodies' slots, in any order.
+  template <class F>
+  void step_share(int thread, F&& f) const;
+  template <class F>
+  void slot_share(int thread, F&& f) const;
+
+  // The whole sweep, or f for every step or slot, on the team (each thread its share).
+  template <class Solve>
+  void sweep(ThreadTeam& team, Solve&& solve) {
+    const uint64_t epoch = new_epochs(1);
+    run(team, [&](int thread) { sweep_share(thread, epoch, solve); });
+  }
+  template <class F>
+  void for_each_step(ThreadTeam& team, F&& f) {
+    run(team, [&](int thread) { step_share(thread, f); });
+  }
+  template <class F>
+  void for_each_slot(ThreadTeam& team, F&& f) {
+    run(team, [&](int thread) { slot_share(thread, f); });
+  }
+  // job(thread) on the team's threads, or on the caller alone when serial.
+  template <class Job>
+  void run(ThreadTeam& team, Job&& job) const {
+    if (parallel()) team.run(job);
+    else job(0);
+  }
+
+ private:
+  void wait_for(int step, int thread, uint64_t epoch) const;
+
+  // How far each thread has come in the current sweep: epoch * 2^32 + steps done. Each on its own
+  // cache line, written only after the steps that another thread waits for.
+  struct alignas(64) Progress {
+    std::atomic<uint64_t> value{0};
+  };
+  static constexpr int kEpochShift = 32;
+
+  // Indexed by step (position in the sweep's order):
+  std::vector<int> order_;                // the item solved at each step
+  std::vector<int> before_a_, before_b_;  // the last earlier step that moves the same body, or -1
+  std::vector<uint8_t> owner_;            // the thread that solves it
+  std::vector<uint32_t> place_;           // its position in that thread's list
+  std::vector<uint8_t> awaited_;          // whether another thread waits for it
+  std::vector<std::vector<int>> lists_;   // each thread's steps, in order
+  std::vector<int> slot_of_body_;
+  int slot_split_ = 0;                    // the second thread's slots start here
+  std::unique_ptr<Progress[]> progress_;
+  int progress_count_ = 0;
+  uint64_t epoch_ = 0;
+};
+
+template <class Solve>
+void SweepSchedule::sweep_share(int thread, uint64_t epoch, Solve&& solve) const {
+  if (!parallel()) {
+    if (thread == 0)
+      for (int step = 0; step < int(order_.size()); ++step) solve(step);
+    return;
+  }
+  if (thread >= int(lists_.size())) return;
+  const std::vector<int>& list = lists_[thread];
+  for (size_t place = 0; place < list.size(); ++place) {
+    const int step = list[place];
+    wait_for(before_a_[step], thread, epoch);
+    wait_for(before_b_[step], thread, epoch);
+    solve(step);
+    if (awaited_[step]) progress_[thread].value.store((epoch << kEpochShift) + place + 1, std::memory_order_release);
+  }
+}
+
+template <class F>
+void SweepSchedule::step_share(int thread, F&& f) const {
+  if (!parallel()) {
+    if (thread == 0)
+      for (int step = 0; step < int(order_.size()); ++step) f(step);
+    return;
+  }
+  if (thread < int(lists_.size()))
+    for (int step : lists_[thread]) f(step);
+}
+
+template <class F>
+void SweepSchedule::slot_share(int thread, F&& f) const {
+  const int count = int(slot_of_body_.size());
+  const int begin = !parallel() ? (thread == 0 ? 0 : count) : thread == 0 ? 0 : thread == 1 ? slot_split_ : count;
+  const int end = !parallel() || thread >= 1 ? count : slot_split_;
+  for (int slot = begin; slot < end; ++slot) f(slot);
+}
+
+}  // namespace impulse::physics
