@@ -24,7 +24,6 @@ constexpr int kMaxManifoldPoints = 4;  // the collision routines reduce every pa
 constexpr Real kMaxHertzPerSubstepRate = Real(1) / 6;
 
 uint64_t pair_key(int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); }
-uint64_t point_key(const Contact& c) { return (pair_key(c.body_a, c.body_b) * 0x9E3779B97F4A7C15ull) ^ c.feature; }
 
 // The normal velocity at which the surfaces meet, predicted from a sub-step that starts
 // `separation` apart with normal velocity `vn` (already including this sub-step's gravity) under
@@ -58,6 +57,7 @@ ContactConstraint make_constraint(const Contact& contact, const std::vector<Body
   ContactConstraint c;
   c.a = slots[contact.body_a];
   c.b = slots[contact.body_b];
+  c.feature = contact.feature;
   const BodyState& sa = states[c.a];
   const BodyState& sb = states[c.b];
   c.normal = contact.normal;
@@ -111,9 +111,18 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   // The constraints are laid out in the sweeps' order: a thread's share is then one block of memory.
   const std::vector<int>& slots = schedule_.slots();
   const std::vector<int>& order = schedule_.order();
+  // Last step's constraints, if it stored its impulses, are the warm start: found by pair (its
+  // manifolds sorted by pair) and then by feature. Each thread reads what it built last step.
+  previous_pairs_.clear();
+  if (impulses_stored_) {
+    std::swap(previous_constraints_, constraints_);
+    std::swap(previous_manifolds_, manifolds_);
+    for (size_t k = 0; k < pair_keys_.size(); ++k) previous_pairs_.push_back({pair_keys_[k], int(k)});
+    std::stable_sort(previous_pairs_.begin(), previous_pairs_.end(), [](const PreviousPair& x, const PreviousPair& y) { return x.key < y.key; });
+  }
+  impulses_stored_ = false;
   manifolds_.resize(order.size());
   constraints_.resize(contacts.size());
-  point_keys_.resize(contacts.size());
   pair_keys_.resize(order.size());
   constraint_of_contact_.resize(contacts.size());
   first_of_step_.resize(order.size());
@@ -121,10 +130,9 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
     first_of_step_[step] = int(next);
     for (int i = groups_[order[step]].first; i < groups_[order[step]].second; ++i) constraint_of_contact_[i] = int(next++);
   }
-  // Built on this thread: a helper would have to fetch every body, state and contact from this
-  // core's cache (measured: twice as slow per manifold).
-  for (int step = 0; step < int(order.size()); ++step) {
-    {
+  // Each thread builds the manifolds it sweeps, from the states and bodies it loaded.
+  schedule_.run(*team_, [&](int thread) {
+    schedule_.step_share(thread, [&](int step) {
       const auto [first, end] = groups_[order[step]];
       ManifoldConstraint& m = manifolds_[step];
       m = ManifoldConstraint{};
@@ -132,17 +140,23 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
       m.b = slots[contacts[first].body_b];
       m.first = first_of_step_[step];
       m.count = end - first;
+      pair_keys_[step] = pair_key(contacts[first].body_a, contacts[first].body_b);
+      const auto [same_pair, other_pair] = std::equal_range(previous_pairs_.begin(), previous_pairs_.end(), PreviousPair{pair_keys_[step], 0},
+                                                            [](const PreviousPair& x, const PreviousPair& y) { return x.key < y.key; });
       for (int i = 0; i < m.count; ++i) {
         ContactConstraint& c = constraints_[m.first + i];
         c = make_constraint(contacts[first + i], bodies, states, slots, settings, gravity, contact_soft, static_soft);
-        point_keys_[m.first + i] = point_key(contacts[first + i]);
-        if (auto warm = warm_normal_.find(point_keys_[m.first + i]); warm != warm_normal_.end()) c.normal_impulse = warm->second;
+        for (auto previous = same_pair; previous != other_pair; ++previous) {
+          const ManifoldConstraint& pm = previous_manifolds_[previous->manifold];
+          for (int j = 0; j < pm.count; ++j)
+            if (previous_constraints_[pm.first + j].feature == c.feature) c.normal_impulse = previous_constraints_[pm.first + j].normal_impulse;
+        }
       }
       prepare_manifold(m, bodies[contacts[first].body_a], bodies[contacts[first].body_b], states);
-      pair_keys_[step] = pair_key(contacts[first].body_a, contacts[first].body_b);
-      if (auto warm = warm_friction_.find(pair_keys_[step]); warm != warm_friction_.end()) warm_start_friction(m, warm->second, bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
-    }
-  }
+      if (same_pair != other_pair)
+        warm_start_friction(m, previous_manifolds_[(other_pair - 1)->manifold], bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
+    });
+  });
 }
 
 // The friction rows of a manifold whose points are built.
@@ -183,13 +197,13 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, const Body& body_a, 
 }
 
 // Last step's friction impulses, and its anchor unless the pair slipped.
-void ContactSolver::warm_start_friction(ManifoldConstraint& m, const WarmFriction& warm, const Body& body_a, const Body& body_b) const {
-  m.tangent_impulse1 = warm.tangent1;
-  m.tangent_impulse2 = warm.tangent2;
-  m.twist_impulse = warm.twist;
-  if (!warm.anchored) return;
-  m.local_anchor_a = warm.local_anchor_a;
-  m.local_anchor_b = warm.local_anchor_b;
+void ContactSolver::warm_start_friction(ManifoldConstraint& m, const ManifoldConstraint& previous, const Body& body_a, const Body& body_b) const {
+  m.tangent_impulse1 = previous.tangent_impulse1;
+  m.tangent_impulse2 = previous.tangent_impulse2;
+  m.twist_impulse = previous.twist_impulse;
+  if (previous.slipped) return;  // a pair that slipped is anchored afresh where it touches now
+  m.local_anchor_a = previous.local_anchor_a;
+  m.local_anchor_b = previous.local_anchor_b;
   const Vec3 offset = (body_a.position + body_a.orientation * m.local_anchor_a) - (body_b.position + body_b.orientation * m.local_anchor_b);
   const Vec3& normal = constraints_[m.first].normal;
   m.drift = offset - offset.dot(normal) * normal;
@@ -482,15 +496,10 @@ void ContactSolver::add_to_totals(int index) {
 }
 
 void ContactSolver::store_impulses() {
-  warm_normal_.clear();
-  warm_friction_.clear();
-  for (size_t i = 0; i < constraints_.size(); ++i) warm_normal_[point_keys_[i]] = constraints_[i].normal_impulse;
-  for (size_t k = 0; k < manifolds_.size(); ++k) {
-    ManifoldConstraint& m = manifolds_[k];
-    // A pair that slipped is anchored afresh where it touches now.
-    WarmFriction& warm = warm_friction_[pair_keys_[k]];
-    warm = {m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse, m.local_anchor_a, m.local_anchor_b, !m.slipped};
+  impulses_stored_ = true;
+  schedule_.for_each_step(*team_, [&](int index) {
     // For the records: each point's share of the friction, by its share of the normal impulse.
+    const ManifoldConstraint& m = manifolds_[index];
     Real normal_sum = 0;
     for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].total_normal_impulse;
     for (int i = 0; i < m.count; ++i) {
@@ -499,7 +508,7 @@ void ContactSolver::store_impulses() {
       c.total_tangent_impulse1 = share * m.total_tangent_impulse1;
       c.total_tangent_impulse2 = share * m.total_tangent_impulse2;
     }
-  }
+  });
 }
 
 }  // namespace impulse::physics

@@ -10,7 +10,6 @@
 #include "physics/thread_team.h"
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace impulse::physics {
@@ -32,6 +31,7 @@ Real mix_friction(Real a, Real b);
 // One contact point.
 struct alignas(64) ContactConstraint {  // a cache line of its own at each end: threads solve neighbours
   int a = -1, b = -1;
+  uint32_t feature = 0;                // the contact's, to find it again next step
   Vec3 normal, tangent1, tangent2;
   Vec3 anchor_a, anchor_b;             // contact point relative to each centre, at step start
   Real adjusted_separation = 0;        // separation - dot(anchor_a - anchor_b, normal)
@@ -83,6 +83,7 @@ class ContactSolver {
   // says where each body's state goes (the solver's indices, in states and in the constraints).
   void plan(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, ThreadTeam& team);
   const std::vector<int>& slots() const { return schedule_.slots(); }
+  const std::vector<int>& body_of_slot() const { return schedule_.bodies(); }
   // Builds the constraints of the planned contacts, warm started from the last step's impulses.
   void prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                const std::vector<BodyState>& states, const ContactSolverSettings& settings,
@@ -101,7 +102,7 @@ class ContactSolver {
   template <class IntegrateVelocity, class IntegratePosition>
   void substep(std::vector<BodyState>& states, Real h, IntegrateVelocity&& integrate_velocity,
                IntegratePosition&& integrate_position);
-  void store_impulses();  // keeps them for warm starting the next step
+  void store_impulses();  // keeps them for warm starting the next step, and shares friction among points for the records
 
   // In the sweeps' order, not the contacts' (constraint_of() maps one to the other).
   std::vector<ContactConstraint>& constraints() { return constraints_; }
@@ -109,9 +110,8 @@ class ContactSolver {
   const ContactConstraint& constraint_of(int contact) const { return constraints_[constraint_of_contact_[contact]]; }
 
  private:
-  struct WarmFriction { Real tangent1, tangent2, twist; Vec3 local_anchor_a, local_anchor_b; bool anchored; };
   void prepare_manifold(ManifoldConstraint& m, const Body& body_a, const Body& body_b, const std::vector<BodyState>& states) const;
-  void warm_start_friction(ManifoldConstraint& m, const WarmFriction& warm, const Body& body_a, const Body& body_b) const;
+  void warm_start_friction(ManifoldConstraint& m, const ManifoldConstraint& previous, const Body& body_a, const Body& body_b) const;
   void warm_start_manifold(int index, std::vector<BodyState>& states) const;
   void solve_manifold(int index, std::vector<BodyState>& states, Real inv_h, bool use_bias);
   void shift_bounce(int index, std::vector<BodyState>& states);
@@ -126,9 +126,13 @@ class ContactSolver {
   std::vector<std::pair<int, int>> groups_;  // each manifold's contacts, [first, end)
   std::vector<int> constraint_of_contact_;
   std::vector<int> first_of_step_;  // each manifold's first constraint
-  std::vector<uint64_t> point_keys_, pair_keys_;
-  std::unordered_map<uint64_t, Real> warm_normal_;           // by pair and feature
-  std::unordered_map<uint64_t, WarmFriction> warm_friction_;  // by pair
+  std::vector<uint64_t> pair_keys_;
+  // The warm start: last step's constraints, and its manifolds' places sorted by pair.
+  struct PreviousPair { uint64_t key; int manifold; };
+  std::vector<ContactConstraint> previous_constraints_;
+  std::vector<ManifoldConstraint> previous_manifolds_;
+  std::vector<PreviousPair> previous_pairs_;
+  bool impulses_stored_ = false;  // store_impulses() since the last prepare()
   ContactSolverSettings settings_;
   ThreadTeam* team_ = nullptr;
   SweepSchedule schedule_;

@@ -22,7 +22,8 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
   order_.resize(count);
   for (size_t i = 0; i < count; ++i) order_[i] = int(i);
   slot_of_body_.resize(body_count);
-  for (int body = 0; body < body_count; ++body) slot_of_body_[body] = body;
+  body_of_slot_.resize(body_count);
+  for (int body = 0; body < body_count; ++body) slot_of_body_[body] = body_of_slot_[body] = body;
   lists_.clear();
   if (count < kMinDissectedItems) return;
 
@@ -76,6 +77,7 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
     for (int body = 0; body < body_count; ++body)
       if (body_owner[body] == owner) slot_of_body_[body] = next_slot++;
   }
+  for (int body = 0; body < body_count; ++body) body_of_slot_[slot_of_body_[body]] = body;
   lists_.assign(2, {});
   place_.resize(count);
   for (size_t step = 0; step < count; ++step) {

@@ -37,6 +37,7 @@ class SweepSchedule {
   // Where each body's solver state goes: each thread's bodies together, so that no core's
   // prefetcher keeps pulling in lines that the other core is writing. The identity when serial.
   const std::vector<int>& slots() const { return slot_of_body_; }
+  const std::vector<int>& bodies() const { return body_of_slot_; }
 
   // Sweeps take consecutive epochs; a thread's share of sweep `epoch` waits only for that sweep.
   uint64_t new_epochs(int count) {
@@ -92,7 +93,7 @@ class SweepSchedule {
   std::vector<uint32_t> place_;           // its position in that thread's list
   std::vector<uint8_t> awaited_;          // whether another thread waits for it
   std::vector<std::vector<int>> lists_;   // each thread's steps, in order
-  std::vector<int> slot_of_body_;
+  std::vector<int> slot_of_body_, body_of_slot_;
   int slot_split_ = 0;                    // the second thread's slots start here
   std::unique_ptr<Progress[]> progress_;
   int progress_count_ = 0;

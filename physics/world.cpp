@@ -29,7 +29,6 @@ const StepRecord& World::step() {
   const Real dt = settings_.time_step;
   const Real h = dt / settings_.substeps;
 
-  for (Body& body : bodies_) body.refresh_world_inertia();
   find_contacts();
   contact_solver_.plan(contacts_, bodies_, *team_);
   load_states();
@@ -123,13 +122,15 @@ void World::find_contacts() {
   } while (islands_.wake_touched(bodies_, contacts_, links_, settings_.linear_slop, settings_.sleep));
 }
 
+// Each thread loads (and later stores) the bodies whose sweeps it solves: their data then stays in
+// its core's cache.
 void World::load_states() {
   states_.resize(bodies_.size() + 1);
   states_.back() = BodyState{};  // the world, for joints fixed in it: static
-  const std::vector<int>& slots = contact_solver_.slots();
-  for (size_t i = 0; i < bodies_.size(); ++i) {
-    const Body& body = bodies_[i];
-    BodyState& s = states_[slots[i]];
+  contact_solver_.for_each_slot([&](int slot) {
+    Body& body = bodies_[contact_solver_.body_of_slot()[slot]];
+    body.refresh_world_inertia();
+    BodyState& s = states_[slot];
     s.v = body.velocity;
     s.w = body.angular_velocity;
     s.dp.setZero();
@@ -140,7 +141,7 @@ void World::load_states() {
     s.inertia_local = body.inertia_local.diagonal();
     s.orientation0 = body.orientation;
     s.gyroscopic = s.inv_mass > 0 && s.inertia_local.maxCoeff() - s.inertia_local.minCoeff() > 1e-9 * s.inertia_local.maxCoeff();
-  }
+  });
 }
 
 void World::integrate_velocities(Real h) {
@@ -180,15 +181,15 @@ void World::integrate_position(BodyState& s, Real h) {
 }
 
 void World::store_states() {
-  for (size_t i = 0; i < bodies_.size(); ++i) {
-    Body& body = bodies_[i];
-    if (body.is_static() || !body.awake) continue;
-    const BodyState& s = states_[contact_solver_.slots()[i]];
+  contact_solver_.for_each_slot([&](int slot) {
+    Body& body = bodies_[contact_solver_.body_of_slot()[slot]];
+    if (body.is_static() || !body.awake) return;
+    const BodyState& s = states_[slot];
     body.velocity = s.v;
     body.angular_velocity = s.w;
     body.position += s.dp;
     body.orientation = (s.dq * body.orientation).normalized();
-  }
+  });
 }
 
 void World::check_finite() const {
