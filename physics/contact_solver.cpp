@@ -194,6 +194,9 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, const Body& body_a, 
   for (int i = 0; i < m.count; ++i) m.twist_radius += (constraints_[m.first + i].anchor_a - centre).norm() / m.count;
   m.local_anchor_a = body_a.orientation.conjugate() * m.centre_a;
   m.local_anchor_b = body_b.orientation.conjugate() * m.centre_b;
+  // A sphere's surface stays where it is as it turns, and a still body does not turn.
+  m.turns_a = sa.inv_mass > 0 && body_a.shape.type != ShapeType::sphere;
+  m.turns_b = sb.inv_mass > 0 && body_b.shape.type != ShapeType::sphere;
 }
 
 // Last step's friction impulses, and its anchor unless the pair slipped.
@@ -263,8 +266,8 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
   // instead of turning every anchor (current_separation, for the manifold).
   const Vec3& normal = constraints_[m.first].normal;
   const Real moved = (sa.dp - sb.dp).dot(normal);
-  const Vec3 normal_in_a = rotate(sa.dq.conjugate(), normal);
-  const Vec3 normal_in_b = rotate(sb.dq.conjugate(), normal);
+  const Vec3 normal_in_a = m.turns_a ? rotate(sa.dq.conjugate(), normal) : normal;
+  const Vec3 normal_in_b = m.turns_b ? rotate(sb.dq.conjugate(), normal) : normal;
   // Each point's target, from its separation now (positions do not change during the passes),
   // and its normal velocity now.
   struct Row { ContactConstraint* c; int point; Real vn, bias, mass, impulse_scale, impulse, start; };
@@ -359,7 +362,9 @@ void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodySta
   // normal rows undo penetration; without it tiny slips add up and stacks creep.
   Real mass_scale = 1, impulse_scale = 0;
   if (use_bias) {
-    const Vec3 moved = (sa.dp - sb.dp) + (rotate(sa.dq, m.centre_a) - rotate(sb.dq, m.centre_b)) - (m.centre_a - m.centre_b);
+    const Vec3 centre_a_now = sa.inv_mass > 0 ? rotate(sa.dq, m.centre_a) : m.centre_a;  // a still body has not turned
+    const Vec3 centre_b_now = sb.inv_mass > 0 ? rotate(sb.dq, m.centre_b) : m.centre_b;
+    const Vec3 moved = (sa.dp - sb.dp) + (centre_a_now - centre_b_now) - (m.centre_a - m.centre_b);
     const Vec3 drift = first.softness.bias_rate * (m.drift + moved);
     v1 += drift.dot(first.tangent1);
     v2 += drift.dot(first.tangent2);

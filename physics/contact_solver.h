@@ -57,6 +57,7 @@ inline Real current_separation(const ContactConstraint& c, const BodyState& sa, 
 struct alignas(64) ManifoldConstraint {
   int a = -1, b = -1;
   int first = 0, count = 0;            // its points in the constraint list
+  bool turns_a = true, turns_b = true; // whether the body's turning moves its points along the normal
   Vec3 centre_a = Vec3::Zero(), centre_b = Vec3::Zero();  // the points' centroid relative to each centre
   Real coupling[4][4] = {};            // d(normal velocity at i) / d(impulse at j), for the points
   Real tangent_mass1 = 0, tangent_mass2 = 0, twist_mass = 0;
