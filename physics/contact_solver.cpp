@@ -16,12 +16,6 @@ namespace {
 constexpr int kManifoldIterations = 2;
 constexpr int kMaxManifoldPoints = 4;  // the collision routines reduce every pair to four
 
-// Contacts stiffer than this fraction of the sub-step rate are not stable. Box2D's rule is 1/4; at
-// 1/4 (and 1/5) a wall of boxes one box thick (the pyramids of ../shared/bench/SCENES.md, even
-// one of 21 boxes) starts to sway out of its plane, growing over seconds, whatever the damping
-// ratio, passes or solve order; friction feeds it (without friction it stays still). At 1/6 and
-// below every pyramid measured stood still.
-constexpr Real kMaxHertzPerSubstepRate = Real(1) / 6;
 
 uint64_t pair_key(int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); }
 
@@ -121,6 +115,9 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
     std::stable_sort(previous_pairs_.begin(), previous_pairs_.end(), [](const PreviousPair& x, const PreviousPair& y) { return x.key < y.key; });
   }
   impulses_stored_ = false;
+  // Impulses are per sub-step: when the sub-step changes length, so do they.
+  const Real warm_scale = stored_h_ > 0 ? h / stored_h_ : 1;
+  h_ = h;
   manifolds_.resize(order.size());
   constraints_.resize(contacts.size());
   pair_keys_.resize(order.size());
@@ -149,12 +146,16 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
         for (auto previous = same_pair; previous != other_pair; ++previous) {
           const ManifoldConstraint& pm = previous_manifolds_[previous->manifold];
           for (int j = 0; j < pm.count; ++j)
-            if (previous_constraints_[pm.first + j].feature == c.feature) c.normal_impulse = previous_constraints_[pm.first + j].normal_impulse;
+            if (previous_constraints_[pm.first + j].feature == c.feature) c.normal_impulse = warm_scale * previous_constraints_[pm.first + j].normal_impulse;
         }
       }
       prepare_manifold(m, bodies[contacts[first].body_a], bodies[contacts[first].body_b], states);
-      if (same_pair != other_pair)
+      if (same_pair != other_pair) {
         warm_start_friction(m, previous_manifolds_[(other_pair - 1)->manifold], bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
+        m.tangent_impulse1 *= warm_scale;
+        m.tangent_impulse2 *= warm_scale;
+        m.twist_impulse *= warm_scale;
+      }
     });
   });
 }
@@ -502,6 +503,7 @@ void ContactSolver::add_to_totals(int index) {
 
 void ContactSolver::store_impulses() {
   impulses_stored_ = true;
+  stored_h_ = h_;
   schedule_.for_each_step(*team_, [&](int index) {
     // For the records: each point's share of the friction, by its share of the normal impulse.
     const ManifoldConstraint& m = manifolds_[index];

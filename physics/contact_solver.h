@@ -23,6 +23,13 @@ struct ContactSolverSettings {
   bool friction = true;                // tangential impulses on or off (exercise 1)
 };
 
+// Contacts stiffer than this fraction of the sub-step rate are not stable. Box2D's rule is 1/4; at
+// 1/4 (and 1/5) a wall of boxes one box thick (the pyramids of ../shared/bench/SCENES.md, even
+// one of 21 boxes) starts to sway out of its plane, growing over seconds, whatever the damping
+// ratio, passes or solve order; friction feeds it (without friction it stays still). At 1/6 and
+// below every pyramid measured stood still.
+constexpr Real kMaxHertzPerSubstepRate = Real(1) / 6;
+
 // Rules for combining two bodies' materials (Box2D's): the larger restitution, and the geometric
 // mean of the friction coefficients.
 Real mix_restitution(Real a, Real b);
@@ -108,6 +115,7 @@ class ContactSolver {
   // In the sweeps' order, not the contacts' (constraint_of() maps one to the other).
   std::vector<ContactConstraint>& constraints() { return constraints_; }
   const std::vector<ContactConstraint>& constraints() const { return constraints_; }
+  const std::vector<ManifoldConstraint>& manifolds() const { return manifolds_; }
   const ContactConstraint& constraint_of(int contact) const { return constraints_[constraint_of_contact_[contact]]; }
 
  private:
@@ -134,6 +142,7 @@ class ContactSolver {
   std::vector<ManifoldConstraint> previous_manifolds_;
   std::vector<PreviousPair> previous_pairs_;
   bool impulses_stored_ = false;  // store_impulses() since the last prepare()
+  Real h_ = 0, stored_h_ = 0;      // this step's sub-step, and the stored impulses'
   ContactSolverSettings settings_;
   ThreadTeam* team_ = nullptr;
   SweepSchedule schedule_;

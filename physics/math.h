@@ -6,6 +6,7 @@
 namespace impulse::physics {
 
 using Real = double;
+constexpr Real kPi = Real(3.14159265358979323846);
 using Vec3 = Eigen::Matrix<Real, 3, 1>;
 using Mat3 = Eigen::Matrix<Real, 3, 3>;
 using Quat = Eigen::Quaternion<Real>;

@@ -56,7 +56,7 @@ struct Softness {
 
 inline Softness make_softness(Real hertz, Real zeta, Real h) {
   if (hertz == 0) return {0, 1, 0};
-  const Real omega = 2 * Real(3.14159265358979323846) * hertz;
+  const Real omega = 2 * kPi * hertz;
   const Real a1 = 2 * zeta + h * omega;
   const Real a2 = h * omega * a1;
   const Real a3 = 1 / (1 + a2);

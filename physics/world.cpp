@@ -1,5 +1,6 @@
 #include "physics/world.h"
 
+#include <cmath>
 #include "physics/teaching_methods.h"
 
 #include <stdexcept>
@@ -10,6 +11,9 @@ namespace impulse::physics {
 World::World(WorldSettings settings) : settings_(settings) {
   if (!(settings_.time_step > 0)) throw std::invalid_argument("time_step must be > 0");
   if (settings_.substeps < 1) throw std::invalid_argument("substeps must be >= 1");
+  if (settings_.min_substeps < 1) throw std::invalid_argument("min_substeps must be >= 1");
+  if (!(settings_.stack_sink >= 0)) throw std::invalid_argument("stack_sink must be >= 0 (0: always `substeps` sub-steps)");
+  substeps_ = settings_.substeps;
   if (settings_.threads < 0) throw std::invalid_argument("threads must be >= 0 (0: one per core)");
   team_ = std::make_unique<ThreadTeam>(settings_.threads > 0 ? settings_.threads : ThreadTeam::default_size());
 }
@@ -27,7 +31,8 @@ int World::add_joint(const JointDef& def) {
 
 const StepRecord& World::step() {
   const Real dt = settings_.time_step;
-  const Real h = dt / settings_.substeps;
+  substeps_ = choose_substeps();
+  const Real h = dt / substeps_;
 
   find_contacts();
   contact_solver_.plan(contacts_, bodies_, *team_);
@@ -51,17 +56,30 @@ const StepRecord& World::step() {
   return record_;
 }
 
+// Fewer sub-steps while every stack would sink less than settings_.stack_sink into its soft
+// contacts at the stiffness they allow (stack_sink.h); back up at once when a load comes, down one
+// a step.
+int World::choose_substeps() {
+  const bool adapts = settings_.method == ResponseMethod::impulse && settings_.stack_sink > 0 &&
+                      settings_.min_substeps < settings_.substeps && settings_.gravity.squaredNorm() > 0;
+  if (!adapts) return settings_.substeps;
+  const Real give = stack_sink_.deepest_give(contact_solver_, states_, bodies_, -settings_.gravity.normalized(), settings_.time_step / substeps_);
+  const Real hertz = std::min(std::sqrt(give / settings_.stack_sink) / (2 * kPi), settings_.contact.contact_hertz);
+  const int needed = std::clamp(int(std::ceil(hertz * settings_.time_step / kMaxHertzPerSubstepRate)), settings_.min_substeps, settings_.substeps);
+  return std::max(needed, substeps_ - 1);
+}
+
 // Box2D v3's soft step: per sub-step, integrate velocities, warm start, solve with the soft
 // position bias (bouncing the contacts that meet), integrate positions, then relax without bias.
 void World::solve_impulse(Real h) {
   if (joints_.empty()) {
-    for (int i = 0; i < settings_.substeps; ++i)
+    for (int i = 0; i < substeps_; ++i)
       contact_solver_.substep(states_, h, [&](int slot) { integrate_velocity(states_[slot], h); },
                               [&](int slot) { integrate_position(states_[slot], h); });
     contact_solver_.store_impulses();
     return;
   }
-  for (int i = 0; i < settings_.substeps; ++i) {
+  for (int i = 0; i < substeps_; ++i) {
     integrate_velocities(h);
     joint_solver_.warm_start(states_);
     contact_solver_.warm_start(states_);
@@ -97,7 +115,7 @@ void World::solve_projection(Real dt) {
 // Semi-implicit Euler per sub-step: forces from the sub-step's starting state, then velocities,
 // then positions.
 void World::solve_penalty(Real h) {
-  for (int i = 0; i < settings_.substeps; ++i) {
+  for (int i = 0; i < substeps_; ++i) {
     apply_penalty_forces(contact_solver_.constraints(), states_, settings_.penalty, h);
     integrate_velocities(h);
     solve_joints(h, true);

@@ -7,6 +7,7 @@
 #include "physics/joint_solver.h"
 #include "physics/contact_solver.h"
 #include "physics/response_method.h"
+#include "physics/stack_sink.h"
 #include "physics/step_record.h"
 #include "physics/thread_team.h"
 
@@ -19,9 +20,12 @@ namespace impulse::physics {
 struct WorldSettings {
   Vec3 gravity{0, -9.81, 0};
   Real time_step = Real(1) / 60;   // s, fixed
-  int substeps = 12;               // solver sub-steps per step (Box2D v3's soft step); 12 let the
-                                   // contacts be stiff (120 Hz) enough that a 20-box stack sinks
+  int substeps = 12;               // solver sub-steps per step at most (Box2D v3's soft step); 12 let
+                                   // the contacts be stiff (120 Hz) enough that a 20-box stack sinks
                                    // < 1 cm, and still stable (contact_solver.cpp)
+  int min_substeps = 4;            // at least, when no stack needs more:
+  Real stack_sink = 0.005;         // m: as few sub-steps as keep every stack from sinking more than
+                                   // this into its soft contacts (stack_sink.h); 0: always `substeps`
   Real linear_slop = 0.005;        // m; speculative contacts start 4 slops away
   ResponseMethod method = ResponseMethod::impulse;
   ContactSolverSettings contact;
@@ -54,12 +58,14 @@ class World {
   Body& body(int index) { return bodies_.at(index); }
   const WorldSettings& settings() const { return settings_; }
   Real time() const { return time_; }
+  int substeps() const { return substeps_; }  // in the last step (between min_substeps and substeps)
   int64_t step_count() const { return step_count_; }
   const StepRecord& last_record() const { return record_; }
 
  private:
   void find_contacts();
   void solve_impulse(Real h);
+  int choose_substeps();
   void solve_workshop(Real dt);
   void solve_projection(Real dt);
   void solve_penalty(Real h);
@@ -75,6 +81,8 @@ class World {
   void fill_record();
 
   WorldSettings settings_;
+  int substeps_ = 1;
+  StackSink stack_sink_;
   std::vector<Body> bodies_;
   std::vector<BodyState> states_;
   std::vector<Contact> contacts_;

@@ -1,0 +1,33 @@
+// How deep stacks sink into their soft contacts, to choose the sub-step count.
+//
+// A soft contact of stiffness k = m (2 pi hertz)^2 gives way by F / k under a load F, and the
+// giving adds up from the ground along every chain of bodies resting on one another: a 20-box
+// stack at 120 Hz sinks 6.6 mm (measured: 6.6). Contacts can be at most a sixth of the sub-step
+// rate stiff (contact_solver.cpp), so a stack that must sink less needs more sub-steps, and a heap
+// of low piles needs fewer.
+#pragma once
+#include "physics/body.h"
+#include "physics/contact_solver.h"
+
+#include <vector>
+
+namespace impulse::physics {
+
+class StackSink {
+ public:
+  // Sum over the deepest chain of (F / m) per contact (a stack's sink times w^2), from the impulses
+  // the solver ended last step with (sub-steps of h seconds). `up` is against gravity.
+  Real deepest_give(const ContactSolver& solver, const std::vector<BodyState>& states, const std::vector<Body>& bodies,
+                    const Vec3& up, Real h);
+
+ private:
+  struct Support {
+    int upper, lower;  // bodies; lower -1 when it does not move
+    Real height;       // the lower body's
+    Real give;         // load force over the contact's mass
+  };
+  std::vector<Support> supports_;
+  std::vector<Real> give_below_;  // per body
+};
+
+}  // namespace impulse::physics
