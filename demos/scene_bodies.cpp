@@ -87,6 +87,8 @@ void read_world(TableReader& top, Scene& scene) {
   w.gravity = r.vec3("gravity", w.gravity);
   w.time_step = 1 / r.number("step_rate", 1 / w.time_step, 1, 100000);
   w.substeps = r.integer("substeps", w.substeps, 1, 64);
+  w.min_substeps = r.integer("min_substeps", w.min_substeps, 1, 64);
+  w.stack_sink = r.number("stack_sink", w.stack_sink, 0, 1);
   w.method = *physics::method_from_name(r.choice("method", "impulse", physics::method_names()));
   w.contact.friction = r.boolean("friction", w.contact.friction);
   w.contact.restitution_threshold = r.number("restitution_threshold", w.contact.restitution_threshold, 0);

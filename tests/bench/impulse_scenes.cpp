@@ -63,8 +63,9 @@ void run_impulse(const Scene& scene, const Run& run, RunResult& out) {
 
 std::string impulse_description() {
   const physics::WorldSettings s;
-  return "impulse (" + std::to_string(s.substeps) + " sub-steps, contact hertz " +
-         std::to_string(int(s.contact.contact_hertz)) + ", " + (sizeof(physics::Real) == 8 ? "double" : "single") +
+  return "impulse (" + std::to_string(s.min_substeps) + " to " + std::to_string(s.substeps) + " sub-steps for stacks sinking < " +
+         std::to_string(int(s.stack_sink * 1000)) + " mm, contact hertz " + std::to_string(int(s.contact.contact_hertz)) + ", " +
+         std::to_string(physics::ThreadTeam::default_size()) + " threads, " + (sizeof(physics::Real) == 8 ? "double" : "single") +
          " precision)";
 }
 
