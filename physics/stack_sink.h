@@ -17,17 +17,17 @@ class StackSink {
  public:
   // Sum over the deepest chain of (F / m) per contact (a stack's sink times w^2), from the impulses
   // the solver ended last step with (sub-steps of h seconds). `up` is against gravity.
-  Real deepest_give(const ContactSolver& solver, const std::vector<BodyState>& states, const std::vector<Body>& bodies,
-                    const Vec3& up, Real h);
+  Real deepest_give(const ContactSolver& solver, const std::vector<Body>& bodies, const Vec3& up, Real h);
 
  private:
   struct Support {
-    int upper, lower;  // bodies; lower -1 when it does not move
+    int upper, lower;  // bodies; lower -1 for a static body
+    bool lower_known;  // static or asleep: its give below is known before the pass
     Real height;       // the lower body's
     Real give;         // load force over the contact's mass
   };
   std::vector<Support> supports_;
-  std::vector<Real> give_below_;  // per body
+  std::vector<Real> give_below_;  // per body; kept for bodies asleep
 };
 
 }  // namespace impulse::physics

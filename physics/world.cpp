@@ -56,17 +56,35 @@ const StepRecord& World::step() {
   return record_;
 }
 
+namespace {
+
+constexpr Real kSecondsBeforeFewer = 1;
+
+}  // namespace
+
 // Fewer sub-steps while every stack would sink less than settings_.stack_sink into its soft
-// contacts at the stiffness they allow (stack_sink.h); back up at once when a load comes, down one
-// a step.
+// contacts at the stiffness they allow (stack_sink.h); more at once when a load comes.
 int World::choose_substeps() {
   const bool adapts = settings_.method == ResponseMethod::impulse && settings_.stack_sink > 0 &&
                       settings_.min_substeps < settings_.substeps && settings_.gravity.squaredNorm() > 0;
   if (!adapts) return settings_.substeps;
-  const Real give = stack_sink_.deepest_give(contact_solver_, states_, bodies_, -settings_.gravity.normalized(), settings_.time_step / substeps_);
+  const Real give = stack_sink_.deepest_give(contact_solver_, bodies_, -settings_.gravity.normalized(), settings_.time_step / substeps_);
   const Real hertz = std::min(std::sqrt(give / settings_.stack_sink) / (2 * kPi), settings_.contact.contact_hertz);
   const int needed = std::clamp(int(std::ceil(hertz * settings_.time_step / kMaxHertzPerSubstepRate)), settings_.min_substeps, settings_.substeps);
-  return std::max(needed, substeps_ - 1);
+  // Each change of stiffness moves every resting body a little (its contacts settle anew): fewer
+  // only after a second of needing fewer, and then at once to the most that second needed, so that
+  // a settling pile changes once rather than at every step.
+  if (needed >= substeps_) {
+    fewer_since_ = 0;
+    most_needed_lately_ = 0;
+    return needed;
+  }
+  most_needed_lately_ = std::max(most_needed_lately_, needed);
+  if (++fewer_since_ * settings_.time_step < kSecondsBeforeFewer) return substeps_;
+  const int fewer = most_needed_lately_;
+  fewer_since_ = 0;
+  most_needed_lately_ = 0;
+  return fewer;
 }
 
 // Box2D v3's soft step: per sub-step, integrate velocities, warm start, solve with the soft

@@ -82,6 +82,7 @@ class World {
 
   WorldSettings settings_;
   int substeps_ = 1;
+  int fewer_since_ = 0, most_needed_lately_ = 0;  // steps needing fewer sub-steps, and the most they needed
   StackSink stack_sink_;
   std::vector<Body> bodies_;
   std::vector<BodyState> states_;
