@@ -110,7 +110,9 @@ class ContactSolver {
   template <class IntegrateVelocity, class IntegratePosition>
   void substep(std::vector<BodyState>& states, Real h, IntegrateVelocity&& integrate_velocity,
                IntegratePosition&& integrate_position);
-  void store_impulses();  // keeps them for warm starting the next step, and shares friction among points for the records
+  // Keeps them for warm starting the next step, and shares each manifold's friction among its
+  // points for the records.
+  void store_impulses();
 
   // In the sweeps' order, not the contacts' (constraint_of() maps one to the other).
   std::vector<ContactConstraint>& constraints() { return constraints_; }
@@ -132,7 +134,7 @@ class ContactSolver {
 
   std::vector<ContactConstraint> constraints_;
   std::vector<ManifoldConstraint> manifolds_;
-  std::vector<std::pair<int, int>> groups_;  // each manifold's contacts, [first, end)
+  std::vector<std::pair<int, int>> groups_;  // each manifold's contacts [first, end), in the contacts' order
   std::vector<int> constraint_of_contact_;
   std::vector<int> first_of_step_;  // each manifold's first constraint
   std::vector<uint64_t> pair_keys_;

@@ -1,8 +1,8 @@
 #include "physics/world.h"
 
-#include <cmath>
 #include "physics/teaching_methods.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -13,8 +13,8 @@ World::World(WorldSettings settings) : settings_(settings) {
   if (settings_.substeps < 1) throw std::invalid_argument("substeps must be >= 1");
   if (settings_.min_substeps < 1) throw std::invalid_argument("min_substeps must be >= 1");
   if (!(settings_.stack_sink >= 0)) throw std::invalid_argument("stack_sink must be >= 0 (0: always `substeps` sub-steps)");
-  substeps_ = settings_.substeps;
   if (settings_.threads < 0) throw std::invalid_argument("threads must be >= 0 (0: one per core)");
+  substeps_ = settings_.substeps;
   team_ = std::make_unique<ThreadTeam>(settings_.threads > 0 ? settings_.threads : ThreadTeam::default_size());
 }
 
