@@ -112,7 +112,8 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
     std::swap(previous_constraints_, constraints_);
     std::swap(previous_manifolds_, manifolds_);
     for (size_t k = 0; k < pair_keys_.size(); ++k) previous_pairs_.push_back({pair_keys_[k], int(k)});
-    std::stable_sort(previous_pairs_.begin(), previous_pairs_.end(), [](const PreviousPair& x, const PreviousPair& y) { return x.key < y.key; });
+    std::sort(previous_pairs_.begin(), previous_pairs_.end(),
+              [](const PreviousPair& x, const PreviousPair& y) { return x.key != y.key ? x.key < y.key : x.manifold < y.manifold; });
   }
   impulses_stored_ = false;
   // Impulses are per sub-step: when the sub-step changes length, so do they.

@@ -50,7 +50,10 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
     const int sides = (item.a >= 0 ? side(item.position_a) : 0) | (item.b >= 0 ? side(item.position_b) : 0);
     part[i] = sides == 3 ? 0 : sides == 2 ? 2 : 1;  // both ends still: left
   }
-  std::stable_sort(order_.begin(), order_.end(), [&](int x, int y) { return part[x] < part[y]; });
+  int next = 0;
+  for (uint8_t group = 0; group < 3; ++group)
+    for (size_t i = 0; i < count; ++i)
+      if (part[i] == group) order_[next++] = int(i);
   if (threads < 2) return;
 
   before_a_.resize(count);
