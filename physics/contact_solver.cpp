@@ -16,7 +16,6 @@ namespace {
 constexpr int kManifoldIterations = 2;
 constexpr int kMaxManifoldPoints = 4;  // the collision routines reduce every pair to four
 
-
 uint64_t pair_key(int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); }
 
 // The normal velocity at which the surfaces meet, predicted from a sub-step that starts
@@ -236,14 +235,8 @@ void ContactSolver::warm_start_manifold(int index, std::vector<BodyState>& state
   BodyState& sb = states[m.b];
   for (int i = 0; i < m.count; ++i) {
     const ContactConstraint& c = constraints_[m.first + i];
-    if (sa.inv_mass > 0) {
-      sa.v += (sa.inv_mass * c.normal_impulse) * c.normal;
-      sa.w += c.normal_impulse * c.angular_a;
-    }
-    if (sb.inv_mass > 0) {
-      sb.v -= (sb.inv_mass * c.normal_impulse) * c.normal;
-      sb.w -= c.normal_impulse * c.angular_b;
-    }
+    add_velocity(sa, (sa.inv_mass * c.normal_impulse) * c.normal, c.normal_impulse * c.angular_a);
+    add_velocity(sb, -((sb.inv_mass * c.normal_impulse) * c.normal), -(c.normal_impulse * c.angular_b));
   }
   apply_friction(m, sa, sb, m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse);
 }
@@ -320,28 +313,16 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
     turn_a += applied * c.angular_a;
     turn_b += applied * c.angular_b;
   }
-  if (sa.inv_mass > 0) {
-    sa.v += sa.inv_mass * linear;
-    sa.w += turn_a;
-  }
-  if (sb.inv_mass > 0) {
-    sb.v -= sb.inv_mass * linear;
-    sb.w -= turn_b;
-  }
+  add_velocity(sa, sa.inv_mass * linear, turn_a);
+  add_velocity(sb, -(sb.inv_mass * linear), -turn_b);
 }
 
 // Tangent impulses j1, j2 at the points' centroid and a twist about the normal: +j on A, -j on B.
 void ContactSolver::apply_friction(const ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real j1, Real j2, Real twist) const {
   const ContactConstraint& first = constraints_[m.first];
   const Vec3 linear = j1 * first.tangent1 + j2 * first.tangent2;
-  if (sa.inv_mass > 0) {
-    sa.v += sa.inv_mass * linear;
-    sa.w += j1 * m.turn_a1 + j2 * m.turn_a2 + twist * m.twist_a;
-  }
-  if (sb.inv_mass > 0) {
-    sb.v -= sb.inv_mass * linear;
-    sb.w -= j1 * m.turn_b1 + j2 * m.turn_b2 + twist * m.twist_b;
-  }
+  add_velocity(sa, sa.inv_mass * linear, j1 * m.turn_a1 + j2 * m.turn_a2 + twist * m.twist_a);
+  add_velocity(sb, -(sb.inv_mass * linear), -(j1 * m.turn_b1 + j2 * m.turn_b2 + twist * m.twist_b));
 }
 
 // Coulomb friction at the points' centroid, within the disc of radius mu times their total

@@ -136,7 +136,7 @@ class ContactSolver {
   std::vector<ManifoldConstraint> manifolds_;
   std::vector<std::pair<int, int>> groups_;  // each manifold's contacts [first, end), in the contacts' order
   std::vector<int> constraint_of_contact_;
-  std::vector<int> first_of_step_;  // each manifold's first constraint
+  std::vector<int> first_of_step_;  // each manifold's first constraint, counted before the threads build them
   std::vector<uint64_t> pair_keys_;
   // The warm start: last step's constraints, and its manifolds' places sorted by pair.
   struct PreviousPair { uint64_t key; int manifold; };

@@ -23,17 +23,20 @@ inline Vec3 relative_velocity(const BodyState& sa, const BodyState& sb, const Ve
   return (sa.v + sa.w.cross(ra)) - (sb.v + sb.w.cross(rb));
 }
 
+// Changes a moving body's velocities. A still body's (static or asleep) is not even written: the
+// other thread may be reading it (the ground under both halves of a heap), and a write, even of
+// the same value, takes its cache line away from that core.
+inline void add_velocity(BodyState& s, const Vec3& dv, const Vec3& dw) {
+  if (s.inv_mass == 0) return;
+  s.v += dv;
+  s.w += dw;
+}
+
 // +P on A at ra and -P on B at rb, linear and angular (eq. 14, corrected: the world-space inverse
 // inertia tensor, and minus for B).
 inline void apply_impulse(BodyState& sa, BodyState& sb, const Vec3& ra, const Vec3& rb, const Vec3& impulse) {
-  if (sa.inv_mass > 0) {
-    sa.v += sa.inv_mass * impulse;
-    sa.w += sa.inv_inertia * ra.cross(impulse);
-  }
-  if (sb.inv_mass > 0) {
-    sb.v -= sb.inv_mass * impulse;
-    sb.w -= sb.inv_inertia * rb.cross(impulse);
-  }
+  add_velocity(sa, sa.inv_mass * impulse, sa.inv_inertia * ra.cross(impulse));
+  add_velocity(sb, -(sb.inv_mass * impulse), -(sb.inv_inertia * rb.cross(impulse)));
 }
 
 // Inverse of the effective mass along direction d at anchors ra, rb:

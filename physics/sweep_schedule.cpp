@@ -91,10 +91,7 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
   for (size_t step = 0; step < count; ++step)
     for (int before : {before_a_[step], before_b_[step]})
       if (before >= 0 && owner_[before] != owner_[step]) awaited_[before] = 1;
-  if (progress_count_ < 2) {
-    progress_ = std::make_unique<Progress[]>(2);
-    progress_count_ = 2;
-  }
+  if (!progress_) progress_ = std::make_unique<Progress[]>(2);
 }
 
 void SweepSchedule::wait_for(int step, int thread, uint64_t epoch) const {

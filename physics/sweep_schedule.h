@@ -96,7 +96,6 @@ class SweepSchedule {
   std::vector<int> slot_of_body_, body_of_slot_;
   int slot_split_ = 0;                    // the second thread's slots start here
   std::unique_ptr<Progress[]> progress_;
-  int progress_count_ = 0;
   uint64_t epoch_ = 0;
 };
 
@@ -132,8 +131,9 @@ void SweepSchedule::step_share(int thread, F&& f) const {
 template <class F>
 void SweepSchedule::slot_share(int thread, F&& f) const {
   const int count = int(slot_of_body_.size());
-  const int begin = !parallel() ? (thread == 0 ? 0 : count) : thread == 0 ? 0 : thread == 1 ? slot_split_ : count;
-  const int end = !parallel() || thread >= 1 ? count : slot_split_;
+  const int split = parallel() ? slot_split_ : count;  // the second thread's slots start here
+  const int begin = thread == 0 ? 0 : thread == 1 ? split : count;
+  const int end = thread == 0 ? split : count;
   for (int slot = begin; slot < end; ++slot) f(slot);
 }
 
