@@ -16,7 +16,12 @@ namespace {
 constexpr int kManifoldIterations = 2;
 constexpr int kMaxManifoldPoints = 4;  // the collision routines reduce every pair to four
 
-uint64_t pair_key(int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); }
+// Increasing with the pair, as the contacts come (ContactFinder), whichever body the narrow phase
+// named first; and which one it was, in the lowest bit: a pair named the other way round has
+// another normal and anchors, and is not warm started from this one.
+uint64_t pair_key(int a, int b) {
+  return (uint64_t(uint32_t(std::min(a, b))) << 33) | (uint64_t(uint32_t(std::max(a, b))) << 1) | uint64_t(a > b);
+}
 
 // The normal velocity at which the surfaces meet, predicted from a sub-step that starts
 // `separation` apart with normal velocity `vn` (already including this sub-step's gravity) under
@@ -104,15 +109,14 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   // The constraints are laid out in the sweeps' order: a thread's share is then one block of memory.
   const std::vector<int>& slots = schedule_.slots();
   const std::vector<int>& order = schedule_.order();
-  // Last step's constraints, if it stored its impulses, are the warm start: found by pair (its
-  // manifolds sorted by pair) and then by feature. Each thread reads what it built last step.
-  previous_pairs_.clear();
+  // Last step's constraints, if it stored its impulses, are the warm start: found by pair, then
+  // by feature. Each thread reads what it built last step.
   if (impulses_stored_) {
     std::swap(previous_constraints_, constraints_);
     std::swap(previous_manifolds_, manifolds_);
-    for (size_t k = 0; k < pair_keys_.size(); ++k) previous_pairs_.push_back({pair_keys_[k], int(k)});
-    std::sort(previous_pairs_.begin(), previous_pairs_.end(),
-              [](const PreviousPair& x, const PreviousPair& y) { return x.key != y.key ? x.key < y.key : x.manifold < y.manifold; });
+    std::swap(previous_pairs_, pairs_);
+  } else {
+    previous_pairs_.clear();
   }
   impulses_stored_ = false;
   // Impulses are per sub-step: when the sub-step changes length, so do they.
@@ -120,13 +124,16 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   h_ = h;
   manifolds_.resize(order.size());
   constraints_.resize(contacts.size());
-  pair_keys_.resize(order.size());
   constraint_of_contact_.resize(contacts.size());
   first_of_step_.resize(order.size());
+  pairs_.resize(order.size());
   for (size_t step = 0, next = 0; step < order.size(); ++step) {
+    const auto [first, end] = groups_[order[step]];
     first_of_step_[step] = int(next);
-    for (int i = groups_[order[step]].first; i < groups_[order[step]].second; ++i) constraint_of_contact_[i] = int(next++);
+    for (int i = first; i < end; ++i) constraint_of_contact_[i] = int(next++);
+    pairs_[order[step]] = {pair_key(contacts[first].body_a, contacts[first].body_b), int(step)};
   }
+  find_previous_pairs();
   // Each thread builds the manifolds it sweeps, from the states and bodies it loaded.
   schedule_.run(*team_, [&](int thread) {
     schedule_.step_share(thread, [&](int step) {
@@ -137,27 +144,44 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
       m.b = slots[contacts[first].body_b];
       m.first = first_of_step_[step];
       m.count = end - first;
-      pair_keys_[step] = pair_key(contacts[first].body_a, contacts[first].body_b);
-      const auto [same_pair, other_pair] = std::equal_range(previous_pairs_.begin(), previous_pairs_.end(), PreviousPair{pair_keys_[step], 0},
-                                                            [](const PreviousPair& x, const PreviousPair& y) { return x.key < y.key; });
+      const auto [same_pair, other_pair] = previous_range_[order[step]];
       for (int i = 0; i < m.count; ++i) {
         ContactConstraint& c = constraints_[m.first + i];
         c = make_constraint(contacts[first + i], bodies, states, slots, settings, gravity, contact_soft, static_soft);
-        for (auto previous = same_pair; previous != other_pair; ++previous) {
-          const ManifoldConstraint& pm = previous_manifolds_[previous->manifold];
+        for (int previous = same_pair; previous != other_pair; ++previous) {
+          const ManifoldConstraint& pm = previous_manifolds_[previous_pairs_[previous].manifold];
           for (int j = 0; j < pm.count; ++j)
             if (previous_constraints_[pm.first + j].feature == c.feature) c.normal_impulse = warm_scale * previous_constraints_[pm.first + j].normal_impulse;
         }
       }
       prepare_manifold(m, bodies[contacts[first].body_a], bodies[contacts[first].body_b], states);
       if (same_pair != other_pair) {
-        warm_start_friction(m, previous_manifolds_[(other_pair - 1)->manifold], bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
+        warm_start_friction(m, previous_manifolds_[previous_pairs_[other_pair - 1].manifold], bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
         m.tangent_impulse1 *= warm_scale;
         m.tangent_impulse2 *= warm_scale;
         m.twist_impulse *= warm_scale;
       }
     });
   });
+}
+
+// For each of this step's manifolds (in the contacts' order), the range of last step's with the
+// same pair. Both lists come by pair, as the contacts do (ContactFinder): one merge, no search.
+void ContactSolver::find_previous_pairs() {
+  auto by_pair = [](const PairPlace& x, const PairPlace& y) { return x.key != y.key ? x.key < y.key : x.manifold < y.manifold; };
+  if (!std::is_sorted(previous_pairs_.begin(), previous_pairs_.end(), by_pair)) std::sort(previous_pairs_.begin(), previous_pairs_.end(), by_pair);
+  previous_range_.resize(pairs_.size());
+  int begin = 0;
+  const int count = int(previous_pairs_.size());
+  for (size_t k = 0; k < pairs_.size(); ++k) {
+    const uint64_t key = pairs_[k].key;
+    if (k > 0 && key < pairs_[k - 1].key)  // out of order after all: search from the start
+      begin = int(std::lower_bound(previous_pairs_.begin(), previous_pairs_.end(), PairPlace{key, -1}, by_pair) - previous_pairs_.begin());
+    while (begin < count && previous_pairs_[begin].key < key) ++begin;
+    int end = begin;
+    while (end < count && previous_pairs_[end].key == key) ++end;
+    previous_range_[k] = {begin, end};
+  }
 }
 
 // The friction rows of a manifold whose points are built.
@@ -241,16 +265,17 @@ void ContactSolver::warm_start_manifold(int index, std::vector<BodyState>& state
   apply_friction(m, sa, sb, m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse);
 }
 
-void ContactSolver::solve_manifold(int index, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
+bool ContactSolver::solve_manifold(int index, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
   ManifoldConstraint& m = manifolds_[index];
   BodyState& sa = states[m.a];
   BodyState& sb = states[m.b];
-  if (use_bias && bounce(m, sa, sb, 1 / inv_h)) return;
+  if (use_bias && bounce(m, sa, sb, 1 / inv_h)) return true;
   solve_normals(m, states, inv_h, use_bias);
-  if (constraints_[m.first].friction == 0) return;
+  if (constraints_[m.first].friction == 0) return false;
   Real normal_sum = 0;
   for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].normal_impulse;
   solve_friction(m, sa, sb, normal_sum, use_bias);
+  return false;
 }
 
 void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias) {

@@ -9,7 +9,9 @@
 #include "physics/sweep_schedule.h"
 #include "physics/thread_team.h"
 
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace impulse::physics {
@@ -121,10 +123,12 @@ class ContactSolver {
   const ContactConstraint& constraint_of(int contact) const { return constraints_[constraint_of_contact_[contact]]; }
 
  private:
+  void find_previous_pairs();
   void prepare_manifold(ManifoldConstraint& m, const Body& body_a, const Body& body_b, const std::vector<BodyState>& states) const;
   void warm_start_friction(ManifoldConstraint& m, const ManifoldConstraint& previous, const Body& body_a, const Body& body_b) const;
   void warm_start_manifold(int index, std::vector<BodyState>& states) const;
-  void solve_manifold(int index, std::vector<BodyState>& states, Real inv_h, bool use_bias);
+  // Returns whether the manifold bounced (restitution, only with use_bias).
+  bool solve_manifold(int index, std::vector<BodyState>& states, Real inv_h, bool use_bias);
   void shift_bounce(int index, std::vector<BodyState>& states);
   void add_to_totals(int index);
   void solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias);
@@ -137,17 +141,23 @@ class ContactSolver {
   std::vector<std::pair<int, int>> groups_;  // each manifold's contacts [first, end), in the contacts' order
   std::vector<int> constraint_of_contact_;
   std::vector<int> first_of_step_;  // each manifold's first constraint, counted before the threads build them
-  std::vector<uint64_t> pair_keys_;
-  // The warm start: last step's constraints, and its manifolds' places sorted by pair.
-  struct PreviousPair { uint64_t key; int manifold; };
+  // The warm start: each manifold's pair and place in the sweeps, in the contacts' order (by pair);
+  // last step's constraints, manifolds and pairs; and where each manifold's pair is among those.
+  struct PairPlace { uint64_t key; int manifold; };
+  std::vector<PairPlace> pairs_;
   std::vector<ContactConstraint> previous_constraints_;
   std::vector<ManifoldConstraint> previous_manifolds_;
-  std::vector<PreviousPair> previous_pairs_;
+  std::vector<PairPlace> previous_pairs_;
+  std::vector<std::pair<int, int>> previous_range_;
   bool impulses_stored_ = false;  // store_impulses() since the last prepare()
   Real h_ = 0, stored_h_ = 0;      // this step's sub-step, and the stored impulses'
   ContactSolverSettings settings_;
   ThreadTeam* team_ = nullptr;
   SweepSchedule schedule_;
+  // Per thread that sweeps (two at most): the last sub-step epoch in which one of its manifolds
+  // bounced. On the heap, as the sweeps' progress counters: atomics cannot move with the solver.
+  struct alignas(64) BounceEpoch { std::atomic<uint64_t> value{0}; };
+  std::unique_ptr<BounceEpoch[]> bounced_ = std::make_unique<BounceEpoch[]>(2);
 };
 
 template <class IntegrateVelocity, class IntegratePosition>
@@ -161,12 +171,18 @@ void ContactSolver::substep(std::vector<BodyState>& states, Real h, IntegrateVel
     meet();
     schedule_.sweep_share(thread, epoch, [&](int index) { warm_start_manifold(index, states); });
     meet();
-    schedule_.sweep_share(thread, epoch + 1, [&](int index) { solve_manifold(index, states, 1 / h, true); });
+    bool bounced = false;
+    schedule_.sweep_share(thread, epoch + 1, [&](int index) { bounced |= solve_manifold(index, states, 1 / h, true); });
+    if (bounced) bounced_[thread].value.store(epoch, std::memory_order_relaxed);  // only threads 0 and 1 have manifolds
     meet();
     schedule_.slot_share(thread, integrate_position);
     meet();
-    schedule_.sweep_share(thread, epoch + 2, [&](int index) { shift_bounce(index, states); });
-    meet();
+    // Most sub-steps nothing bounces (resting piles): then no sweep to take shifts back. The
+    // barriers order the flags; every thread reads the same and takes the same way.
+    if (bounced_[0].value.load(std::memory_order_relaxed) == epoch || bounced_[1].value.load(std::memory_order_relaxed) == epoch) {
+      schedule_.sweep_share(thread, epoch + 2, [&](int index) { shift_bounce(index, states); });
+      meet();
+    }
     schedule_.sweep_share(thread, epoch + 3, [&](int index) {
       solve_manifold(index, states, 1 / h, false);
       add_to_totals(index);  // the relax pass is the sub-step's last word on this manifold
