@@ -46,6 +46,36 @@ bool clamp_to_disc(Real& j1, Real& j2, Real limit, Real slip = INFINITY) {
   return length_squared > slip * slip;
 }
 
+// A manifold point's normal row during one solve: its velocity along the normal now, its target
+// (bias), soft mass and impulse.
+struct NormalRow {
+  ContactConstraint* c;
+  int point;
+  Real vn, bias, mass, impulse_scale, impulse, start;
+};
+
+// Gauss-Seidel passes over N rows that see each other through the coupling matrix. N is known to
+// the compiler, so that the rows' velocities stay in registers: each row waits on the one before.
+template <int N>
+void solve_rows(NormalRow* rows, const Real (&coupling)[4][4], int passes) {
+  Real vn[N], impulse[N], c[N][N];
+  for (int i = 0; i < N; ++i) {
+    vn[i] = rows[i].vn;
+    impulse[i] = rows[i].impulse;
+    for (int j = 0; j < N; ++j) c[i][j] = coupling[rows[i].point][rows[j].point];
+  }
+  for (int pass = 0; pass < passes; ++pass) {
+    for (int k = 0; k < N; ++k) {
+      const NormalRow& row = rows[k];
+      const Real new_impulse = std::max(impulse[k] - row.mass * (vn[k] + row.bias) - row.impulse_scale * impulse[k], Real(0));
+      const Real applied = new_impulse - impulse[k];
+      impulse[k] = new_impulse;
+      for (int j = 0; j < N; ++j) vn[j] += c[j][k] * applied;
+    }
+  }
+  for (int i = 0; i < N; ++i) rows[i].impulse = impulse[i];
+}
+
 // One contact point's constraint, without its warm start.
 ContactConstraint make_constraint(const Contact& contact, const std::vector<Body>& bodies, const std::vector<BodyState>& states,
                                   const std::vector<int>& slots, const ContactSolverSettings& settings, const Vec3& gravity,
@@ -290,14 +320,13 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
   const Vec3 normal_in_b = m.turns_b ? rotate(sb.dq.conjugate(), normal) : normal;
   // Each point's target, from its separation now (positions do not change during the passes),
   // and its normal velocity now.
-  struct Row { ContactConstraint* c; int point; Real vn, bias, mass, impulse_scale, impulse, start; };
-  Row rows[kMaxManifoldPoints];
+  NormalRow rows[kMaxManifoldPoints];
   int row_count = 0;
   for (int i = 0; i < m.count; ++i) {
     ContactConstraint& c = constraints_[m.first + i];
     const Real separation = moved + normal_in_a.dot(c.anchor_a) - normal_in_b.dot(c.anchor_b) + c.adjusted_separation;
     const Real vn = dv.dot(c.normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n);
-    Row row{&c, i, vn, 0, c.normal_mass, 0, c.normal_impulse, c.normal_impulse};
+    NormalRow row{&c, i, vn, 0, c.normal_mass, 0, c.normal_impulse, c.normal_impulse};
     if (separation > 0) {
       // Speculative: may close the gap this sub-step, no further. The relax pass leaves it be:
       // the next solve clamps it anyway, and slowing a body before it touches would lose the
@@ -320,14 +349,12 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
   // bodies get the sum afterwards (the same arithmetic, without a chain through the bodies'
   // velocities after every point).
   const int passes = row_count == 1 || !use_bias ? 1 : kManifoldIterations;
-  for (int pass = 0; pass < passes; ++pass) {
-    for (int k = 0; k < row_count; ++k) {
-      Row& row = rows[k];
-      const Real new_impulse = std::max(row.impulse - row.mass * (row.vn + row.bias) - row.impulse_scale * row.impulse, Real(0));
-      const Real applied = new_impulse - row.impulse;
-      row.impulse = new_impulse;
-      for (int j = 0; j < row_count; ++j) rows[j].vn += m.coupling[rows[j].point][row.point] * applied;
-    }
+  switch (row_count) {
+    case 1: solve_rows<1>(rows, m.coupling, passes); break;
+    case 2: solve_rows<2>(rows, m.coupling, passes); break;
+    case 3: solve_rows<3>(rows, m.coupling, passes); break;
+    case 4: solve_rows<4>(rows, m.coupling, passes); break;
+    default: break;
   }
   Vec3 linear = Vec3::Zero(), turn_a = Vec3::Zero(), turn_b = Vec3::Zero();
   for (int k = 0; k < row_count; ++k) {
