@@ -10,10 +10,6 @@ Real mix_friction(Real a, Real b) { return std::sqrt(a * b); }
 
 namespace {
 
-// Passes over a manifold's points per solve: one pass favours the point solved first, and a box
-// on a box then tilts; two bring the points close enough to agreement (with friction anchors) to
-// hold the stack tests, four cost 20 % more for no gain there.
-constexpr int kManifoldIterations = 2;
 constexpr int kMaxManifoldPoints = 4;  // the collision routines reduce every pair to four
 
 // Increasing with the pair, as the contacts come (ContactFinder), whichever body the narrow phase
@@ -54,24 +50,24 @@ struct NormalRow {
   Real vn, bias, mass, impulse_scale, impulse, start;
 };
 
-// Gauss-Seidel passes over N rows that see each other through the coupling matrix. N is known to
-// the compiler, so that the rows' velocities stay in registers: each row waits on the one before.
-template <int N>
-void solve_rows(NormalRow* rows, const Real (&coupling)[4][4], int passes) {
+// One Gauss-Seidel pass over N rows that see each other through the coupling matrix, first to last
+// or last to first. N and the direction are known to the compiler, so that the rows' velocities
+// stay in registers: each row waits on the one before.
+template <int N, bool Backwards>
+void solve_rows(NormalRow* rows, const Real (&coupling)[4][4]) {
   Real vn[N], impulse[N], c[N][N];
   for (int i = 0; i < N; ++i) {
     vn[i] = rows[i].vn;
     impulse[i] = rows[i].impulse;
     for (int j = 0; j < N; ++j) c[i][j] = coupling[rows[i].point][rows[j].point];
   }
-  for (int pass = 0; pass < passes; ++pass) {
-    for (int k = 0; k < N; ++k) {
-      const NormalRow& row = rows[k];
-      const Real new_impulse = std::max(impulse[k] - row.mass * (vn[k] + row.bias) - row.impulse_scale * impulse[k], Real(0));
-      const Real applied = new_impulse - impulse[k];
-      impulse[k] = new_impulse;
-      for (int j = 0; j < N; ++j) vn[j] += c[j][k] * applied;
-    }
+  for (int step = 0; step < N; ++step) {
+    const int k = Backwards ? N - 1 - step : step;
+    const NormalRow& row = rows[k];
+    const Real new_impulse = std::max(impulse[k] - row.mass * (vn[k] + row.bias) - row.impulse_scale * impulse[k], Real(0));
+    const Real applied = new_impulse - impulse[k];
+    impulse[k] = new_impulse;
+    for (int j = 0; j < N; ++j) vn[j] += c[j][k] * applied;
   }
   for (int i = 0; i < N; ++i) rows[i].impulse = impulse[i];
 }
@@ -281,6 +277,7 @@ void ContactSolver::apply_bounce_shifts(std::vector<BodyState>& states) {
 
 void ContactSolver::end_substep() {
   schedule_.for_each_step(*team_, [&](int index) { add_to_totals(index); });
+  backwards_ = !backwards_;
 }
 
 void ContactSolver::warm_start_manifold(int index, std::vector<BodyState>& states) const {
@@ -342,18 +339,22 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
   }
 
   // Accumulated and clamped to push only; the target is "stop approaching" (restitution is
-  // bounce()'s). Several passes when the manifold has several points; the relax pass, which only
-  // takes back the bias velocity, makes do with one. Gauss-Seidel point after point, as if each
-  // impulse were applied to the bodies at once; but the points of one pair see each other only
-  // through the coupling matrix, so the passes update their normal velocities alone, and the
-  // bodies get the sum afterwards (the same arithmetic, without a chain through the bodies'
-  // velocities after every point).
-  const int passes = row_count == 1 || !use_bias ? 1 : kManifoldIterations;
-  switch (row_count) {
-    case 1: solve_rows<1>(rows, m.coupling, passes); break;
-    case 2: solve_rows<2>(rows, m.coupling, passes); break;
-    case 3: solve_rows<3>(rows, m.coupling, passes); break;
-    case 4: solve_rows<4>(rows, m.coupling, passes); break;
+  // bounce()'s). Gauss-Seidel point after point, as if each impulse were applied to the bodies at
+  // once; but the points of one pair see each other only through the coupling matrix, so the pass
+  // updates their normal velocities alone, and the bodies get the sum afterwards (the same
+  // arithmetic, without a chain through the bodies' velocities after every point). One pass, in
+  // turn forwards and backwards from one sub-step to the next: always forwards, the first point
+  // gets more than its share, and a wall of boxes one box thick (the 21-box pyramid) starts to
+  // sway; two passes forwards also hold, at 8 % more time on the 210 pyramid.
+  switch (row_count * 2 + backwards_) {
+    case 2: solve_rows<1, false>(rows, m.coupling); break;
+    case 3: solve_rows<1, true>(rows, m.coupling); break;
+    case 4: solve_rows<2, false>(rows, m.coupling); break;
+    case 5: solve_rows<2, true>(rows, m.coupling); break;
+    case 6: solve_rows<3, false>(rows, m.coupling); break;
+    case 7: solve_rows<3, true>(rows, m.coupling); break;
+    case 8: solve_rows<4, false>(rows, m.coupling); break;
+    case 9: solve_rows<4, true>(rows, m.coupling); break;
     default: break;
   }
   Vec3 linear = Vec3::Zero(), turn_a = Vec3::Zero(), turn_b = Vec3::Zero();

@@ -101,7 +101,7 @@ class ContactSolver {
   void warm_start(std::vector<BodyState>& states);
   void solve(std::vector<BodyState>& states, Real inv_h, bool use_bias);
   void apply_bounce_shifts(std::vector<BodyState>& states);  // after integrating positions
-  void end_substep();     // adds this sub-step's impulses to the step totals
+  void end_substep();     // adds this sub-step's impulses to the step totals; the next goes the other way
   // f(slot) for every body's slot, each on the thread whose sweeps move it (its data stays in that core).
   template <class F>
   void for_each_slot(F&& f) { schedule_.for_each_slot(*team_, f); }
@@ -152,6 +152,7 @@ class ContactSolver {
   bool impulses_stored_ = false;  // store_impulses() since the last prepare()
   Real h_ = 0, stored_h_ = 0;      // this step's sub-step, and the stored impulses'
   ContactSolverSettings settings_;
+  bool backwards_ = false;  // this sub-step's order of a manifold's points (solve_normals)
   ThreadTeam* team_ = nullptr;
   SweepSchedule schedule_;
   // Per thread that sweeps (two at most): the last sub-step epoch in which one of its manifolds
@@ -188,6 +189,7 @@ void ContactSolver::substep(std::vector<BodyState>& states, Real h, IntegrateVel
       add_to_totals(index);  // the relax pass is the sub-step's last word on this manifold
     });
   });
+  backwards_ = !backwards_;
 }
 
 }  // namespace impulse::physics
