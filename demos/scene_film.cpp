@@ -25,7 +25,8 @@ void SceneFilm::next(ScenePicture& picture) {
   // Step until the world is at or past this frame's moment; draw the bodies in between.
   while (world_.time() < time_ - 1e-9) {
     before_.swap(after_);
-    const physics::StepRecord& record = world_.step();
+    world_.step();
+    const physics::StepRecord& record = world_.record();
     after_ = poses_of(world_.bodies());
     hold_.add_step(record, video_time);
     plots_.add_step(record, world_.bodies());

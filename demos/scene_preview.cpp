@@ -27,7 +27,8 @@ ScenePreview preview_scene(const Scene& scene) {
   PlotRecorder plots(scene.overlay.plots, plotted_body(bodies, scene.overlay.plot_body));
   const double threshold = scene.playback.slow_motion_impulse;
   while (world.time() < scene.duration + 0.5 * scene.world.time_step) {
-    const physics::StepRecord& record = world.step();
+    world.step();
+    const physics::StepRecord& record = world.record();
     bool impact = false;
     for (const physics::ContactRecord& contact : record.contacts) {
       const bool moving = (contact.body_a >= 0 && !bodies[contact.body_a].is_static()) ||

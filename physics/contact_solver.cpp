@@ -539,9 +539,16 @@ void ContactSolver::add_to_totals(int index) {
 void ContactSolver::store_impulses() {
   impulses_stored_ = true;
   stored_h_ = h_;
+  loads_.resize(manifolds_.size());
   schedule_.for_each_step(*team_, [&](int index) {
-    // For the records: each point's share of the friction, by its share of the normal impulse.
     const ManifoldConstraint& m = manifolds_[index];
+    ManifoldLoad& load = loads_[index];
+    load = {m.a, m.b, 0, 0, constraints_[m.first].normal};
+    for (int i = 0; i < m.count; ++i) {
+      load.impulse += constraints_[m.first + i].normal_impulse;
+      load.normal_mass += constraints_[m.first + i].normal_mass;
+    }
+    // For the records: each point's share of the friction, by its share of the normal impulse.
     Real normal_sum = 0;
     for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].total_normal_impulse;
     for (int i = 0; i < m.count; ++i) {

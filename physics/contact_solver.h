@@ -87,6 +87,15 @@ struct alignas(64) ManifoldConstraint {
   Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
 };
 
+// A manifold's load at the end of a step, for StackSink: its last sub-step's impulse and the sum of
+// its points' normal masses. Small and apart from the constraints, so that the thread that
+// reads it does not pull in the lines of the constraints that another thread solves.
+struct ManifoldLoad {
+  int a = -1, b = -1;  // slots
+  Real impulse = 0, normal_mass = 0;
+  Vec3 normal = Vec3::UnitY();
+};
+
 class ContactSolver {
  public:
   // Plans this step's sweeps over the contacts' manifolds and how `team` shares them; slots() then
@@ -112,9 +121,10 @@ class ContactSolver {
   template <class IntegrateVelocity, class IntegratePosition>
   void substep(std::vector<BodyState>& states, Real h, IntegrateVelocity&& integrate_velocity,
                IntegratePosition&& integrate_position);
-  // Keeps them for warm starting the next step, and shares each manifold's friction among its
-  // points for the records.
+  // Keeps them for warm starting the next step, shares each manifold's friction among its points
+  // for the records, and notes each manifold's load.
   void store_impulses();
+  const std::vector<ManifoldLoad>& loads() const { return loads_; }
 
   // In the sweeps' order, not the contacts' (constraint_of() maps one to the other).
   std::vector<ContactConstraint>& constraints() { return constraints_; }
@@ -138,6 +148,7 @@ class ContactSolver {
 
   std::vector<ContactConstraint> constraints_;
   std::vector<ManifoldConstraint> manifolds_;
+  std::vector<ManifoldLoad> loads_;  // per manifold, at the last store_impulses()
   std::vector<std::pair<int, int>> groups_;  // each manifold's contacts [first, end), in the contacts' order
   std::vector<int> constraint_of_contact_;
   std::vector<int> first_of_step_;  // each manifold's first constraint, counted before the threads build them

@@ -5,48 +5,63 @@
 namespace impulse::physics {
 
 Real StackSink::deepest_give(const ContactSolver& solver, const std::vector<Body>& bodies, const Vec3& up, Real h) {
-  const auto& constraints = solver.constraints();
   const auto& body_of_slot = solver.body_of_slot();
+  const int n = int(bodies.size());
+  // Bodies asleep keep the give below them from when they were awake.
+  give_below_.resize(n, 0);
+  for (int i = 0; i < n; ++i)
+    if (bodies[i].awake || bodies[i].is_static()) give_below_[i] = 0;
+  // Supports on a still body (static or asleep) start the chains: the give below them is known.
   supports_.clear();
-  for (const ManifoldConstraint& m : solver.manifolds()) {
-    Real force = 0, mass = 0;
-    for (int i = 0; i < m.count; ++i) {
-      force += constraints[m.first + i].normal_impulse / h;
-      mass += constraints[m.first + i].normal_mass;
-    }
-    if (force <= 0 || mass <= 0) continue;
-    const bool a_above = constraints[m.first].normal.dot(up) > 0;  // the normal points from B to A
-    const int upper = body_of_slot[a_above ? m.a : m.b], lower = body_of_slot[a_above ? m.b : m.a];
+  for (const ManifoldLoad& load : solver.loads()) {
+    if (load.impulse <= 0 || load.normal_mass <= 0) continue;
+    const bool a_above = load.normal.dot(up) > 0;  // the normal points from B to A
+    const int upper = body_of_slot[a_above ? load.a : load.b], lower = body_of_slot[a_above ? load.b : load.a];
+    const Real give = load.impulse / h / load.normal_mass;
     if (bodies[lower].is_static()) {
       // Twice as stiff as between two moving bodies (staticSoftness): a quarter the give.
-      supports_.push_back({upper, -1, true, 0, force / mass / 4});
+      give_below_[upper] = std::max(give_below_[upper], give / 4);
     } else if (!bodies[lower].awake) {
       // Asleep, the solver holds it as still; awake again, the chain under it gives as it did
       // when it fell asleep. Counted so, a pile does not lose sub-steps as it falls asleep.
-      supports_.push_back({upper, lower, true, 0, force / mass});
+      give_below_[upper] = std::max(give_below_[upper], give_below_[lower] + give);
     } else {
-      supports_.push_back({upper, lower, false, bodies[lower].position.dot(up), force / mass});
+      supports_.push_back({upper, lower, give});
     }
   }
-  // Lowest supports first, so that a body's own give below is complete before it passes it on.
-  std::sort(supports_.begin(), supports_.end(), [](const Support& x, const Support& y) {
-    return x.lower_known != y.lower_known ? x.lower_known : x.height < y.height;
-  });
-  // Bodies asleep keep the give below them from when they were awake.
-  give_below_.resize(bodies.size(), 0);
-  for (size_t i = 0; i < bodies.size(); ++i)
-    if (bodies[i].awake || bodies[i].is_static()) give_below_[i] = 0;
-  Real deepest = 0;
+  // The chains between moving bodies, each body once all the supports under it are counted (Kahn's
+  // topological order): the longest chain from the ground to every body.
+  unsupported_below_.assign(n, 0);
+  first_above_.assign(n + 1, 0);
   for (const Support& s : supports_) {
-    const Real give = (s.lower >= 0 ? give_below_[s.lower] : 0) + s.give;
-    give_below_[s.upper] = std::max(give_below_[s.upper], give);
-    deepest = std::max(deepest, give);
+    ++unsupported_below_[s.upper];
+    ++first_above_[s.lower + 1];
   }
+  for (int i = 0; i < n; ++i) first_above_[i + 1] += first_above_[i];
+  above_.resize(supports_.size());
+  next_above_.assign(first_above_.begin(), first_above_.end() - 1);
+  for (const Support& s : supports_) above_[next_above_[s.lower]++] = &s - supports_.data();
+  ready_.clear();
+  for (int i = 0; i < n; ++i)
+    if (unsupported_below_[i] == 0) ready_.push_back(i);
+  for (size_t k = 0; k < ready_.size(); ++k) {
+    const int lower = ready_[k];
+    for (int e = first_above_[lower]; e < first_above_[lower + 1]; ++e) {
+      const Support& s = supports_[above_[e]];
+      give_below_[s.upper] = std::max(give_below_[s.upper], give_below_[lower] + s.give);
+      if (--unsupported_below_[s.upper] == 0) ready_.push_back(s.upper);
+    }
+  }
+  // Bodies leaning on each other in a ring (no order exists) pass their give on once.
+  if (int(ready_.size()) < n)
+    for (const Support& s : supports_)
+      if (unsupported_below_[s.lower] > 0) give_below_[s.upper] = std::max(give_below_[s.upper], give_below_[s.lower] + s.give);
   // A pile asleep will need its sub-steps again when it wakes; as long as it sleeps they cost
   // little (its contacts are not solved), and a pile that lost them as it fell asleep, its last
   // bodies still awake and softer, would wake itself again.
-  for (size_t i = 0; i < bodies.size(); ++i)
-    if (!bodies[i].awake && !bodies[i].is_static()) deepest = std::max(deepest, give_below_[i]);
+  Real deepest = 0;
+  for (int i = 0; i < n; ++i)
+    if (!bodies[i].is_static()) deepest = std::max(deepest, give_below_[i]);
   return deepest;
 }
 

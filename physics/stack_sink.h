@@ -15,19 +15,20 @@ namespace impulse::physics {
 
 class StackSink {
  public:
-  // Sum over the deepest chain of (F / m) per contact (a stack's sink times w^2), from the impulses
+  // Sum over the deepest chain of (F / m) per contact (a stack's sink times w^2), from the loads
   // the solver ended last step with (sub-steps of h seconds). `up` is against gravity.
   Real deepest_give(const ContactSolver& solver, const std::vector<Body>& bodies, const Vec3& up, Real h);
 
  private:
-  struct Support {
-    int upper, lower;  // bodies; lower -1 for a static body
-    bool lower_known;  // static or asleep: its give below is known before the pass
-    Real height;       // the lower body's
-    Real give;         // load force over the contact's mass
+  struct Support {  // between two moving bodies
+    int upper, lower;
+    Real give;       // load force over the contact's mass
   };
   std::vector<Support> supports_;
   std::vector<Real> give_below_;  // per body; kept for bodies asleep
+  // Scratch for the topological order, per body: supports under it not yet counted; where its
+  // supports of bodies above start in above_ (the supports, grouped by lower body).
+  std::vector<int> unsupported_below_, first_above_, next_above_, above_, ready_;
 };
 
 }  // namespace impulse::physics

@@ -29,7 +29,7 @@ int World::add_joint(const JointDef& def) {
   return int(joints_.size()) - 1;
 }
 
-const StepRecord& World::step() {
+void World::step() {
   const Real dt = settings_.time_step;
   substeps_ = choose_substeps();
   const Real h = dt / substeps_;
@@ -52,7 +52,11 @@ const StepRecord& World::step() {
   time_ += dt;
   ++step_count_;
   check_finite();
-  fill_record();
+}
+
+const StepRecord& World::record() const {
+  if (recorded_step_ != step_count_) fill_record();
+  recorded_step_ = step_count_;
   return record_;
 }
 
@@ -216,28 +220,33 @@ void World::integrate_position(BodyState& s, Real h) {
   s.dq.normalize();
 }
 
+// Each thread stores, and checks, the bodies it solved: their lines stay in its core's cache.
 void World::store_states() {
+  non_finite_body_->store(int(bodies_.size()), std::memory_order_relaxed);
   contact_solver_.for_each_slot([&](int slot) {
-    Body& body = bodies_[contact_solver_.body_of_slot()[slot]];
-    if (body.is_static() || !body.awake) return;
+    const int index = contact_solver_.body_of_slot()[slot];
+    Body& body = bodies_[index];
+    if (body.is_static() || !body.awake) return;  // unchanged, and checked when it last moved
     const BodyState& s = states_[slot];
     body.velocity = s.v;
     body.angular_velocity = s.w;
     body.position += s.dp;
     body.orientation = (s.dq * body.orientation).normalized();
+    if (is_finite(body.position) && is_finite(body.orientation) && is_finite(body.velocity) && is_finite(body.angular_velocity)) return;
+    int lowest = non_finite_body_->load(std::memory_order_relaxed);  // the same body named, however many threads
+    while (index < lowest && !non_finite_body_->compare_exchange_weak(lowest, index, std::memory_order_relaxed)) {
+    }
   });
 }
 
 void World::check_finite() const {
-  for (size_t i = 0; i < bodies_.size(); ++i) {
-    const Body& b = bodies_[i];
-    if (is_finite(b.position) && is_finite(b.orientation) && is_finite(b.velocity) && is_finite(b.angular_velocity)) continue;
-    throw std::runtime_error("body '" + b.name + "' (index " + std::to_string(i) + ") has a non-finite state after step " +
-                             std::to_string(step_count_) + " (t = " + std::to_string(time_) + " s)");
-  }
+  const int index = non_finite_body_->load(std::memory_order_relaxed);
+  if (index >= int(bodies_.size())) return;
+  throw std::runtime_error("body '" + bodies_[index].name + "' (index " + std::to_string(index) + ") has a non-finite state after step " +
+                           std::to_string(step_count_) + " (t = " + std::to_string(time_) + " s)");
 }
 
-void World::fill_record() {
+void World::fill_record() const {
   record_.step = step_count_;
   record_.time = time_;
   record_.contacts.clear();

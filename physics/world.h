@@ -11,6 +11,7 @@
 #include "physics/step_record.h"
 #include "physics/thread_team.h"
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -47,7 +48,11 @@ class World {
 
   // Advances one fixed time step. Throws std::runtime_error naming the body when a body's state
   // is no longer finite (NaN or infinity never reaches the caller's renderer).
-  const StepRecord& step();
+  void step();
+  // What the last step did: its contacts and impulses, energies and momenta. Gathered when first
+  // asked for after a step (a renderer asks once a frame; a benchmark, like Bullet's step, never),
+  // and valid until the next step.
+  const StepRecord& record() const;
 
   // Joins two bodies (or a body and the world, kWorld) at their current poses; returns its index.
   // Throws std::invalid_argument for an impossible joint.
@@ -60,7 +65,6 @@ class World {
   Real time() const { return time_; }
   int substeps() const { return substeps_; }  // in the last step (between min_substeps and substeps)
   int64_t step_count() const { return step_count_; }
-  const StepRecord& last_record() const { return record_; }
 
  private:
   void find_contacts();
@@ -78,7 +82,7 @@ class World {
   void integrate_positions(Real h);
   void store_states();
   void check_finite() const;
-  void fill_record();
+  void fill_record() const;
 
   WorldSettings settings_;
   int substeps_ = 1;
@@ -95,7 +99,10 @@ class World {
   std::vector<std::pair<int, int>> links_;  // body pairs joined by joints, for the islands
   ContactSolver contact_solver_;
   std::unique_ptr<ThreadTeam> team_;  // on the heap: the solver keeps its address, and World can move
-  StepRecord record_;
+  // The lowest index store_states() found not finite, or the body count. On the heap: World moves.
+  std::unique_ptr<std::atomic<int>> non_finite_body_ = std::make_unique<std::atomic<int>>(0);
+  mutable StepRecord record_;
+  mutable int64_t recorded_step_ = -1;  // the step_count_ record_ was gathered at
   Real time_ = 0;
   int64_t step_count_ = 0;
 };

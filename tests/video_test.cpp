@@ -107,7 +107,8 @@ TEST(Video, PngReadBackEqualsTheRenderedFrame) {
   const demos::Scene scene = small_scene(dir);
   physics::World world = demos::build_world(scene);
   render::Renderer renderer(scene.video.width, scene.video.height);
-  const render::Frame& frame = renderer.draw(demos::make_draw_list(scene, world, world.step()));
+  world.step();
+  const render::Frame& frame = renderer.draw(demos::make_draw_list(scene, world, world.record()));
   const std::string path = (dir / "frame.png").string();
   render::write_png(path, frame);
   const render::Frame back = render::read_png(path);
