@@ -284,12 +284,20 @@ void ContactSolver::warm_start_manifold(int index, std::vector<BodyState>& state
   const ManifoldConstraint& m = manifolds_[index];
   BodyState& sa = states[m.a];
   BodyState& sb = states[m.b];
+  // The points share the normal: one sum of their impulses, added to each body once with friction's.
+  const ContactConstraint& first = constraints_[m.first];
+  Real normal_sum = 0;
+  Vec3 turn_a = m.tangent_impulse1 * m.turn_a1 + m.tangent_impulse2 * m.turn_a2 + m.twist_impulse * m.twist_a;
+  Vec3 turn_b = m.tangent_impulse1 * m.turn_b1 + m.tangent_impulse2 * m.turn_b2 + m.twist_impulse * m.twist_b;
   for (int i = 0; i < m.count; ++i) {
     const ContactConstraint& c = constraints_[m.first + i];
-    add_velocity(sa, (sa.inv_mass * c.normal_impulse) * c.normal, c.normal_impulse * c.angular_a);
-    add_velocity(sb, -((sb.inv_mass * c.normal_impulse) * c.normal), -(c.normal_impulse * c.angular_b));
+    normal_sum += c.normal_impulse;
+    turn_a += c.normal_impulse * c.angular_a;
+    turn_b += c.normal_impulse * c.angular_b;
   }
-  apply_friction(m, sa, sb, m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse);
+  const Vec3 linear = normal_sum * first.normal + m.tangent_impulse1 * first.tangent1 + m.tangent_impulse2 * first.tangent2;
+  add_velocity(sa, sa.inv_mass * linear, turn_a);
+  add_velocity(sb, -(sb.inv_mass * linear), -turn_b);
 }
 
 bool ContactSolver::solve_manifold(int index, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
