@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace impulse::physics {
 
@@ -19,8 +20,44 @@ Aabb body_aabb(const Body& body, Real margin) {
   return {body.position - reach, body.position + reach};
 }
 
+namespace {
+
+constexpr int kMinBodiesPerThread = 256;  // fewer: not worth waking a helper for
+
+}  // namespace
+
+// The entries by lower bound along `axis`, ties by body. From last call's order when it swept the
+// same bodies along the same axis: bodies move little in a step, so an insertion sort has little
+// to do. When it would have much (a fast scatter), std::sort instead.
+void BroadPhase::sort_entries(const std::vector<Aabb>& boxes, const std::vector<uint8_t>& active, int axis) {
+  const int n = int(boxes.size()), axis1 = (axis + 1) % 3, axis2 = (axis + 2) % 3;
+  if (axis != order_axis_ || int(order_.size()) != n) {
+    order_.resize(n);
+    std::iota(order_.begin(), order_.end(), 0);
+    order_axis_ = axis;
+  }
+  entries_.resize(n);
+  for (int k = 0; k < n; ++k) {
+    const int i = order_[k];
+    const Aabb& box = boxes[i];
+    entries_[k] = {box.lower[axis], box.upper[axis], box.lower[axis1], box.upper[axis1], box.lower[axis2], box.upper[axis2], i, active[i]};
+  }
+  auto before = [](const Entry& p, const Entry& q) { return p.lower < q.lower || (p.lower == q.lower && p.body < q.body); };
+  int64_t moves = 0;
+  const int64_t most_moves = 8 * int64_t(n);
+  for (int k = 1; k < n && moves <= most_moves; ++k) {
+    const Entry entry = entries_[k];
+    int m = k;
+    for (; m > 0 && before(entry, entries_[m - 1]); --m) entries_[m] = entries_[m - 1];
+    entries_[m] = entry;
+    moves += k - m;
+  }
+  if (moves > most_moves) std::sort(entries_.begin(), entries_.end(), before);
+  for (int k = 0; k < n; ++k) order_[k] = entries_[k].body;
+}
+
 void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, const std::vector<uint8_t>& active,
-                            std::vector<BodyPair>& pairs) {
+                            std::vector<BodyPair>& pairs, ThreadTeam* team) {
   pairs.clear();
   const int n = int(boxes.size());
 
@@ -39,37 +76,41 @@ void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, const std::vector<ui
     const Vec3 variance = sum_squares / finite - (sum / finite).cwiseAbs2();
     variance.maxCoeff(&axis);
   }
-  const int axis1 = (axis + 1) % 3, axis2 = (axis + 2) % 3;
+  sort_entries(boxes, active, axis);
 
-  entries_.resize(n);
-  for (int i = 0; i < n; ++i) {
-    const Aabb& box = boxes[i];
-    entries_[i] = {box.lower[axis], box.upper[axis], box.lower[axis1], box.upper[axis1],
-                   box.lower[axis2], box.upper[axis2], i, active[i]};
-  }
-  std::sort(entries_.begin(), entries_.end(), [](const Entry& p, const Entry& q) {
-    return p.lower < q.lower || (p.lower == q.lower && p.body < q.body);
-  });
-
-  unsorted_.clear();
-  for (int k = 0; k < n; ++k) {
-    const Entry& p = entries_[k];
-    for (int m = k + 1; m < n && entries_[m].lower <= p.upper; ++m) {
-      const Entry& q = entries_[m];
-      // Without branches: which of the tests fails is unpredictable, and mispredictions cost more
-      // than the comparisons.
-      const bool hit = (p.active | q.active) & (p.lower1 <= q.upper1) & (q.lower1 <= p.upper1) &
-                       (p.lower2 <= q.upper2) & (q.lower2 <= p.upper2);
-      if (hit) unsorted_.push_back(p.body < q.body ? BodyPair{p.body, q.body} : BodyPair{q.body, p.body});
+  // The sweep, shared by runs of entries when the team has threads and there are enough.
+  const int threads = team != nullptr && n >= kMinBodiesPerThread * 2 ? std::min(team->size(), 2) : 1;
+  found_.resize(threads);
+  auto sweep = [&](int thread) {
+    if (thread >= threads) return;
+    std::vector<BodyPair>& found = found_[thread];
+    found.clear();
+    for (int k = n * thread / threads; k < n * (thread + 1) / threads; ++k) {
+      const Entry& p = entries_[k];
+      for (int m = k + 1; m < n && entries_[m].lower <= p.upper; ++m) {
+        const Entry& q = entries_[m];
+        // Without branches: which of the tests fails is unpredictable, and mispredictions cost
+        // more than the comparisons.
+        const bool hit = (p.active | q.active) & (p.lower1 <= q.upper1) & (q.lower1 <= p.upper1) &
+                         (p.lower2 <= q.upper2) & (q.lower2 <= p.upper2);
+        if (hit) found.push_back(p.body < q.body ? BodyPair{p.body, q.body} : BodyPair{q.body, p.body});
+      }
     }
-  }
+  };
+  if (threads > 1) team->run(sweep);
+  else sweep(0);
 
   // Counting sort on a, then each (small) run of equal a sorted on b.
   starts_.assign(n + 1, 0);
-  for (const BodyPair& pair : unsorted_) ++starts_[pair.a + 1];
+  size_t count = 0;
+  for (const std::vector<BodyPair>& found : found_) {
+    count += found.size();
+    for (const BodyPair& pair : found) ++starts_[pair.a + 1];
+  }
   for (int i = 0; i < n; ++i) starts_[i + 1] += starts_[i];
-  pairs.resize(unsorted_.size());
-  for (const BodyPair& pair : unsorted_) pairs[starts_[pair.a]++] = pair;
+  pairs.resize(count);
+  for (const std::vector<BodyPair>& found : found_)
+    for (const BodyPair& pair : found) pairs[starts_[pair.a]++] = pair;
   auto run = pairs.begin();
   for (int i = 0; i < n; ++i) {  // starts_[i] is now the end of run i
     const auto end = pairs.begin() + starts_[i];

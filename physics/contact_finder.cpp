@@ -30,7 +30,7 @@ void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint
     motion_bounds_[i] = motion_bound(bodies[i], dt);
     boxes_[i] = body_aabb(bodies[i], base_margin / 2 + motion_bounds_[i]);
   }
-  broad_phase_.find_pairs(boxes_, awake, pairs_);
+  broad_phase_.find_pairs(boxes_, awake, pairs_, &team);
   auto collide_range = [&](size_t begin, size_t end, std::vector<Contact>& contacts) {
     for (size_t k = begin; k < end; ++k) {
       const BodyPair& pair = pairs_[k];

@@ -56,6 +56,32 @@ TEST(BroadPhase, FindsExactlyTheBruteForcePairsInOrder) {
     EXPECT_EQ(pairs, expected) << "seed " << seed;
     broad_phase.find_pairs(boxes, awake, pairs);  // again, with its buffers in use
     EXPECT_EQ(pairs, expected) << "seed " << seed << ", second call";
+    ThreadTeam team(2);
+    broad_phase.find_pairs(boxes, awake, pairs, &team);  // two threads sweeping
+    EXPECT_EQ(pairs, expected) << "seed " << seed << ", two threads";
+  }
+}
+
+// From one call to the next the bodies move: the order kept from the last call is sorted anew,
+// by a few moves when they moved a little, and from scratch when they scattered.
+TEST(BroadPhase, FindsTheBruteForcePairsAfterTheBodiesMove) {
+  std::vector<uint8_t> awake;
+  auto bodies = random_bodies(5, awake);
+  BroadPhase broad_phase;
+  ThreadTeam team(2);
+  std::mt19937 rng(5);
+  for (Real reach : {0.05, 0.05, 3.0, 0.05}) {
+    std::uniform_real_distribution<Real> shift(-reach, reach);
+    for (Body& body : bodies)
+      if (!body.is_static()) body.position += Vec3(shift(rng), shift(rng), shift(rng));
+    std::vector<Aabb> boxes;
+    for (const Body& body : bodies) boxes.push_back(body_aabb(body, 0.01));
+    std::vector<BodyPair> expected, pairs;
+    for (int i = 0; i < int(boxes.size()); ++i)
+      for (int j = i + 1; j < int(boxes.size()); ++j)
+        if ((awake[i] || awake[j]) && overlap(boxes[i], boxes[j])) expected.push_back({i, j});
+    broad_phase.find_pairs(boxes, awake, pairs, &team);
+    EXPECT_EQ(pairs, expected) << "bodies moved up to " << reach << " m";
   }
 }
 
