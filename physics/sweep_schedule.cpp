@@ -42,16 +42,22 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
   std::nth_element(keys.begin(), keys.begin() + count / 2, keys.end());
   const Real cut = keys[count / 2];
 
-  // Crossing first, then left, then right, each in the natural order.
+  // Crossing first, then left, then right, each in the natural order; and of the right ones, those
+  // that move a body of a crossing one last: the second thread, which sweeps the right ones, then
+  // reaches them when the first has long solved the crossing ones, and need not wait.
   auto side = [&](const Vec3& p) { return p[axis] < cut ? 1 : 2; };
-  std::vector<uint8_t> part(count);
+  enum Part : uint8_t { crossing, left, right, right_after_crossing };
+  std::vector<uint8_t> part(count), crossed(body_count, 0);
   for (size_t i = 0; i < count; ++i) {
     const SweepItem& item = items[i];
     const int sides = (item.a >= 0 ? side(item.position_a) : 0) | (item.b >= 0 ? side(item.position_b) : 0);
-    part[i] = sides == 3 ? 0 : sides == 2 ? 2 : 1;  // both ends still: left
+    part[i] = sides == 3 ? crossing : sides == 2 ? right : left;  // both ends still: left
+    if (part[i] == crossing) crossed[item.a] = crossed[item.b] = 1;
   }
+  for (size_t i = 0; i < count; ++i)
+    if (part[i] == right && ((items[i].a >= 0 && crossed[items[i].a]) || (items[i].b >= 0 && crossed[items[i].b]))) part[i] = right_after_crossing;
   int next = 0;
-  for (uint8_t group = 0; group < 3; ++group)
+  for (uint8_t group = crossing; group <= right_after_crossing; ++group)
     for (size_t i = 0; i < count; ++i)
       if (part[i] == group) order_[next++] = int(i);
   if (threads < 2) return;
@@ -66,7 +72,7 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
     before_b_[step] = item.b >= 0 ? last[item.b] : -1;
     if (item.a >= 0) last[item.a] = int(step);
     if (item.b >= 0) last[item.b] = int(step);
-    owner_[step] = part[order_[step]] == 2 ? 1 : 0;
+    owner_[step] = part[order_[step]] >= right ? 1 : 0;
   }
   // Each side's bodies get consecutive slots (those in no manifold go with the first side).
   std::vector<uint8_t> body_owner(body_count, 0);

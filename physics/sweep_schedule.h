@@ -2,12 +2,13 @@
 // it without changing a bit of the result.
 //
 // A large set is cut in two along its longest axis (nested dissection, one level): first the
-// manifolds that join bodies on both sides, then those on the left, then those on the right. The
-// order depends on the bodies only, never on the thread count, so one thread and many give the same
-// results. Threads share the sweep by parts (the crossing and left manifolds, the right ones); before
-// each manifold a thread waits until the manifolds before it in the order that move one of its
-// bodies are done, so every body receives its impulses in exactly the sweep's order. The two sides
-// touch different bodies: the threads wait on each other only at the start, for the crossing ones.
+// manifolds that join bodies on both sides, then those on the left, then those on the right (last
+// the right ones that share a body with a crossing one). The order depends on the bodies only,
+// never on the thread count, so one thread and many give the same results. Threads share the sweep
+// by parts (the crossing and left manifolds, the right ones); before each manifold a thread waits
+// until the manifolds before it in the order that move one of its bodies are done, so every body
+// receives its impulses in exactly the sweep's order. The two sides touch different bodies, and the
+// right ones that wait for crossing ones come last: the threads hardly ever wait on each other.
 #pragma once
 #include "physics/math.h"
 #include "physics/thread_team.h"
