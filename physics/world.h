@@ -25,7 +25,7 @@ struct WorldSettings {
                                    // the contacts be stiff (120 Hz) enough that a 20-box stack sinks
                                    // < 1 cm, and still stable (contact_solver.cpp)
   int min_substeps = 4;            // at least, when no stack needs more:
-  Real stack_sink = 0.005;         // m: as few sub-steps as keep every stack from sinking more than
+  Real stack_sink = 0.007;         // m: as few sub-steps as keep every stack from sinking more than
                                    // this into its soft contacts (stack_sink.h); 0: always `substeps`
   Real linear_slop = 0.005;        // m; speculative contacts start 4 slops away
   ResponseMethod method = ResponseMethod::impulse;
