@@ -2,6 +2,7 @@
 #include "physics/broadphase.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -23,6 +24,7 @@ Aabb body_aabb(const Body& body, Real margin) {
 namespace {
 
 constexpr int kMinBodiesPerThread = 256;  // fewer: not worth waking a helper for
+constexpr int kEntriesPerRun = 64;
 
 }  // namespace
 
@@ -78,22 +80,27 @@ void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, const std::vector<ui
   }
   sort_entries(boxes, active, axis);
 
-  // The sweep, shared by runs of entries when the team has threads and there are enough.
+  // The sweep, shared when the team has threads and there are enough entries: a thread takes the
+  // next run of entries as it finishes one (how much a run costs varies: a pyramid's wide bottom
+  // rows have more neighbours than its top). Which thread finds which pair varies; the pairs do not.
   const int threads = team != nullptr && n >= kMinBodiesPerThread * 2 ? std::min(team->size(), 2) : 1;
   found_.resize(threads);
+  for (Found& found : found_) found.pairs.clear();
+  std::atomic<int> next_run{0};
   auto sweep = [&](int thread) {
     if (thread >= threads) return;
-    std::vector<BodyPair>& found = found_[thread];
-    found.clear();
-    for (int k = n * thread / threads; k < n * (thread + 1) / threads; ++k) {
-      const Entry& p = entries_[k];
-      for (int m = k + 1; m < n && entries_[m].lower <= p.upper; ++m) {
-        const Entry& q = entries_[m];
-        // Without branches: which of the tests fails is unpredictable, and mispredictions cost
-        // more than the comparisons.
-        const bool hit = (p.active | q.active) & (p.lower1 <= q.upper1) & (q.lower1 <= p.upper1) &
-                         (p.lower2 <= q.upper2) & (q.lower2 <= p.upper2);
-        if (hit) found.push_back(p.body < q.body ? BodyPair{p.body, q.body} : BodyPair{q.body, p.body});
+    std::vector<BodyPair>& found = found_[thread].pairs;
+    for (int begin; (begin = next_run.fetch_add(kEntriesPerRun, std::memory_order_relaxed)) < n;) {
+      for (int k = begin, end = std::min(begin + kEntriesPerRun, n); k < end; ++k) {
+        const Entry& p = entries_[k];
+        for (int m = k + 1; m < n && entries_[m].lower <= p.upper; ++m) {
+          const Entry& q = entries_[m];
+          // Without branches: which of the tests fails is unpredictable, and mispredictions cost
+          // more than the comparisons.
+          const bool hit = (p.active | q.active) & (p.lower1 <= q.upper1) & (q.lower1 <= p.upper1) &
+                           (p.lower2 <= q.upper2) & (q.lower2 <= p.upper2);
+          if (hit) found.push_back(p.body < q.body ? BodyPair{p.body, q.body} : BodyPair{q.body, p.body});
+        }
       }
     }
   };
@@ -103,14 +110,14 @@ void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, const std::vector<ui
   // Counting sort on a, then each (small) run of equal a sorted on b.
   starts_.assign(n + 1, 0);
   size_t count = 0;
-  for (const std::vector<BodyPair>& found : found_) {
-    count += found.size();
-    for (const BodyPair& pair : found) ++starts_[pair.a + 1];
+  for (const Found& found : found_) {
+    count += found.pairs.size();
+    for (const BodyPair& pair : found.pairs) ++starts_[pair.a + 1];
   }
   for (int i = 0; i < n; ++i) starts_[i + 1] += starts_[i];
   pairs.resize(count);
-  for (const std::vector<BodyPair>& found : found_)
-    for (const BodyPair& pair : found) pairs[starts_[pair.a]++] = pair;
+  for (const Found& found : found_)
+    for (const BodyPair& pair : found.pairs) pairs[starts_[pair.a]++] = pair;
   auto run = pairs.begin();
   for (int i = 0; i < n; ++i) {  // starts_[i] is now the end of run i
     const auto end = pairs.begin() + starts_[i];

@@ -50,7 +50,12 @@ class BroadPhase {
   std::vector<Entry> entries_;
   std::vector<int> order_;                    // last call's bodies in sweep order
   int order_axis_ = -1;                       // and its axis
-  std::vector<std::vector<BodyPair>> found_;  // each thread's pairs, unsorted
+  // Each thread's pairs, unsorted. A line of its own each: a push_back writes the vector's end,
+  // and two threads writing one line would pass it back and forth at every pair.
+  struct alignas(64) Found {
+    std::vector<BodyPair> pairs;
+  };
+  std::vector<Found> found_;
   std::vector<int> starts_;
 };
 
