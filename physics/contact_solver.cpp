@@ -517,6 +517,7 @@ bool ContactSolver::bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, 
   const Hit* earliest = std::min_element(hits, hits + hit_count, [](const Hit& x, const Hit& y) { return x.tau < y.tau; });
   const Real a = constraints_[earliest->index].normal_acceleration, after = h - earliest->tau;
   m.bounce_shift = (earliest->u * after + a * after * after / 2) - (earliest->gap + earliest->target * h);
+  m.bounce_speed = earliest->u;
   m.bounced = true;
   return true;
 }
@@ -529,7 +530,10 @@ void ContactSolver::shift_bounce(int index, std::vector<BodyState>& states) {
   BodyState& sa = states[m.a];
   BodyState& sb = states[m.b];
   const Real parting = (sa.v - sb.v).dot(constraints_[m.first].normal);
-  if (parting > 1e-6) {
+  // Only while the pair parts at no less than half its bounce: one that barely parts (the bodies
+  // around took the hit up) would be shifted by seconds of its velocity. Measured in a heap of
+  // 1000 boxes with e = 0.5, before this rule: a shift of -162 s, a box thrown out at 159 m/s.
+  if (parting > 1e-6 && parting >= m.bounce_speed / 2) {
     const Real dt = m.bounce_shift / parting;
     if (sa.inv_mass > 0) sa.dp += sa.v * dt;
     if (sb.inv_mass > 0) sb.dp += sb.v * dt;

@@ -85,6 +85,7 @@ struct alignas(64) ManifoldConstraint {
   Real total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
   bool bounced = false;                // restitution applied this step
   Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
+  Real bounce_speed = 0;               // m/s, the speed the pair parts at after its hit
 };
 
 // A manifold's load at the end of a step, for StackSink: its last sub-step's impulse and the sum of
