@@ -226,12 +226,14 @@ void World::store_states() {
   contact_solver_.for_each_slot([&](int slot) {
     const int index = contact_solver_.body_of_slot()[slot];
     Body& body = bodies_[index];
-    if (body.is_static() || !body.awake) return;  // unchanged, and checked when it last moved
-    const BodyState& s = states_[slot];
-    body.velocity = s.v;
-    body.angular_velocity = s.w;
-    body.position += s.dp;
-    body.orientation = (s.dq * body.orientation).normalized();
+    if (!body.is_static() && body.awake) {
+      const BodyState& s = states_[slot];
+      body.velocity = s.v;
+      body.angular_velocity = s.w;
+      body.position += s.dp;
+      body.orientation = (s.dq * body.orientation).normalized();
+    }
+    // Every body, still ones too: a caller may have set a sleeping body's state between steps.
     if (is_finite(body.position) && is_finite(body.orientation) && is_finite(body.velocity) && is_finite(body.angular_velocity)) return;
     int lowest = non_finite_body_->load(std::memory_order_relaxed);  // the same body named, however many threads
     while (index < lowest && !non_finite_body_->compare_exchange_weak(lowest, index, std::memory_order_relaxed)) {
