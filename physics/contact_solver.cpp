@@ -45,7 +45,7 @@ bool clamp_to_disc(Real& j1, Real& j2, Real limit, Real slip = INFINITY) {
 // A manifold point's normal row during one solve: its velocity along the normal now, its target
 // (bias), soft mass and impulse.
 struct NormalRow {
-  ContactConstraint* c;
+  PointRow* c;
   int point;
   Real vn, bias, mass, impulse_scale, impulse, start;
 };
@@ -150,6 +150,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   h_ = h;
   manifolds_.resize(order.size());
   constraints_.resize(contacts.size());
+  rows_.resize(contacts.size());
   constraint_of_contact_.resize(contacts.size());
   first_of_step_.resize(order.size());
   pairs_.resize(order.size());
@@ -181,6 +182,11 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
         }
       }
       prepare_manifold(m, bodies[contacts[first].body_a], bodies[contacts[first].body_b], states);
+      for (int i = 0; i < m.count; ++i) {
+        const ContactConstraint& c = constraints_[m.first + i];
+        rows_[m.first + i] = {c.anchor_a, c.anchor_b, c.ra_cross_n, c.rb_cross_n, c.angular_a, c.angular_b,
+                              c.adjusted_separation, c.normal_mass, c.normal_impulse, 0};
+      }
       if (same_pair != other_pair) {
         warm_start_friction(m, previous_manifolds_[previous_pairs_[other_pair - 1].manifold], bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
         m.tangent_impulse1 *= warm_scale;
@@ -215,6 +221,12 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, const Body& body_a, 
   const BodyState& sa = states[m.a];
   const BodyState& sb = states[m.b];
   const ContactConstraint& first = constraints_[m.first];
+  m.normal = first.normal;
+  m.tangent1 = first.tangent1;
+  m.tangent2 = first.tangent2;
+  m.softness = first.softness;
+  m.friction = first.friction;
+  m.restitution = first.restitution;
   Vec3 centre = Vec3::Zero();
   for (int i = 0; i < m.count; ++i) centre += constraints_[m.first + i].anchor_a;
   centre /= m.count;  // relative to A
@@ -259,7 +271,7 @@ void ContactSolver::warm_start_friction(ManifoldConstraint& m, const ManifoldCon
   m.local_anchor_a = previous.local_anchor_a;
   m.local_anchor_b = previous.local_anchor_b;
   const Vec3 offset = (body_a.position + body_a.orientation * m.local_anchor_a) - (body_b.position + body_b.orientation * m.local_anchor_b);
-  const Vec3& normal = constraints_[m.first].normal;
+  const Vec3& normal = m.normal;
   m.drift = offset - offset.dot(normal) * normal;
 }
 
@@ -285,17 +297,16 @@ void ContactSolver::warm_start_manifold(int index, std::vector<BodyState>& state
   BodyState& sa = states[m.a];
   BodyState& sb = states[m.b];
   // The points share the normal: one sum of their impulses, added to each body once with friction's.
-  const ContactConstraint& first = constraints_[m.first];
   Real normal_sum = 0;
   Vec3 turn_a = m.tangent_impulse1 * m.turn_a1 + m.tangent_impulse2 * m.turn_a2 + m.twist_impulse * m.twist_a;
   Vec3 turn_b = m.tangent_impulse1 * m.turn_b1 + m.tangent_impulse2 * m.turn_b2 + m.twist_impulse * m.twist_b;
   for (int i = 0; i < m.count; ++i) {
-    const ContactConstraint& c = constraints_[m.first + i];
+    const PointRow& c = rows_[m.first + i];
     normal_sum += c.normal_impulse;
     turn_a += c.normal_impulse * c.angular_a;
     turn_b += c.normal_impulse * c.angular_b;
   }
-  const Vec3 linear = normal_sum * first.normal + m.tangent_impulse1 * first.tangent1 + m.tangent_impulse2 * first.tangent2;
+  const Vec3 linear = normal_sum * m.normal + m.tangent_impulse1 * m.tangent1 + m.tangent_impulse2 * m.tangent2;
   add_velocity(sa, sa.inv_mass * linear, turn_a);
   add_velocity(sb, -(sb.inv_mass * linear), -turn_b);
 }
@@ -306,9 +317,9 @@ bool ContactSolver::solve_manifold(int index, std::vector<BodyState>& states, Re
   BodyState& sb = states[m.b];
   if (use_bias && bounce(m, sa, sb, 1 / inv_h)) return true;
   solve_normals(m, states, inv_h, use_bias);
-  if (constraints_[m.first].friction == 0) return false;
+  if (m.friction == 0) return false;
   Real normal_sum = 0;
-  for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].normal_impulse;
+  for (int i = 0; i < m.count; ++i) normal_sum += rows_[m.first + i].normal_impulse;
   solve_friction(m, sa, sb, normal_sum, use_bias);
   return false;
 }
@@ -319,7 +330,7 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
   const Vec3 dv = sa.v - sb.v;
   // The points share the normal: n . (dq r) = (dq^-1 n) . r turns the normal back once per body
   // instead of turning every anchor (current_separation, for the manifold).
-  const Vec3& normal = constraints_[m.first].normal;
+  const Vec3& normal = m.normal;
   const Real moved = (sa.dp - sb.dp).dot(normal);
   const Vec3 normal_in_a = m.turns_a ? rotate(sa.dq.conjugate(), normal) : normal;
   const Vec3 normal_in_b = m.turns_b ? rotate(sb.dq.conjugate(), normal) : normal;
@@ -328,9 +339,9 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
   NormalRow rows[kMaxManifoldPoints];
   int row_count = 0;
   for (int i = 0; i < m.count; ++i) {
-    ContactConstraint& c = constraints_[m.first + i];
+    PointRow& c = rows_[m.first + i];
     const Real separation = moved + normal_in_a.dot(c.anchor_a) - normal_in_b.dot(c.anchor_b) + c.adjusted_separation;
-    const Real vn = dv.dot(c.normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n);
+    const Real vn = dv.dot(normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n);
     NormalRow row{&c, i, vn, 0, c.normal_mass, 0, c.normal_impulse, c.normal_impulse};
     if (separation > 0) {
       // Speculative: may close the gap this sub-step, no further. The relax pass leaves it be:
@@ -339,9 +350,9 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
       if (!use_bias) continue;
       row.bias = separation * inv_h;
     } else if (use_bias) {
-      row.bias = std::max(c.softness.bias_rate * separation, -settings_.max_push_velocity);
-      row.mass *= c.softness.mass_scale;
-      row.impulse_scale = c.softness.impulse_scale;
+      row.bias = std::max(m.softness.bias_rate * separation, -settings_.max_push_velocity);
+      row.mass *= m.softness.mass_scale;
+      row.impulse_scale = m.softness.impulse_scale;
     }
     rows[row_count++] = row;
   }
@@ -367,10 +378,10 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
   }
   Vec3 linear = Vec3::Zero(), turn_a = Vec3::Zero(), turn_b = Vec3::Zero();
   for (int k = 0; k < row_count; ++k) {
-    ContactConstraint& c = *rows[k].c;
+    PointRow& c = *rows[k].c;
     const Real applied = rows[k].impulse - rows[k].start;
     c.normal_impulse = rows[k].impulse;
-    linear += applied * c.normal;
+    linear += applied * normal;
     turn_a += applied * c.angular_a;
     turn_b += applied * c.angular_b;
   }
@@ -380,8 +391,7 @@ void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>&
 
 // Tangent impulses j1, j2 at the points' centroid and a twist about the normal: +j on A, -j on B.
 void ContactSolver::apply_friction(const ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real j1, Real j2, Real twist) const {
-  const ContactConstraint& first = constraints_[m.first];
-  const Vec3 linear = j1 * first.tangent1 + j2 * first.tangent2;
+  const Vec3 linear = j1 * m.tangent1 + j2 * m.tangent2;
   add_velocity(sa, sa.inv_mass * linear, j1 * m.turn_a1 + j2 * m.turn_a2 + twist * m.twist_a);
   add_velocity(sb, -(sb.inv_mass * linear), -(j1 * m.turn_b1 + j2 * m.turn_b2 + twist * m.twist_b));
 }
@@ -389,8 +399,7 @@ void ContactSolver::apply_friction(const ManifoldConstraint& m, BodyState& sa, B
 // Coulomb friction at the points' centroid, within the disc of radius mu times their total
 // normal impulse, and a twist about the normal within mu times that times the points' spread.
 void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum, bool use_bias) {
-  const ContactConstraint& first = constraints_[m.first];
-  const Real limit = first.friction * normal_sum;
+  const Real limit = m.friction * normal_sum;
   if (limit == 0) {
     // Not pressed together (a speculative pair): no friction, and nothing to anchor.
     m.slipped = true;
@@ -400,8 +409,8 @@ void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodySta
     return;
   }
   const Vec3 dv = sa.v - sb.v;
-  Real v1 = dv.dot(first.tangent1) + sa.w.dot(m.ra_cross_t1) - sb.w.dot(m.rb_cross_t1);
-  Real v2 = dv.dot(first.tangent2) + sa.w.dot(m.ra_cross_t2) - sb.w.dot(m.rb_cross_t2);
+  Real v1 = dv.dot(m.tangent1) + sa.w.dot(m.ra_cross_t1) - sb.w.dot(m.rb_cross_t1);
+  Real v2 = dv.dot(m.tangent2) + sa.w.dot(m.ra_cross_t2) - sb.w.dot(m.rb_cross_t2);
   // Static friction also undoes the drift from where the pair first touched, softly, as the
   // normal rows undo penetration; without it tiny slips add up and stacks creep.
   Real mass_scale = 1, impulse_scale = 0;
@@ -409,11 +418,11 @@ void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodySta
     const Vec3 centre_a_now = sa.inv_mass > 0 ? rotate(sa.dq, m.centre_a) : m.centre_a;  // a still body has not turned
     const Vec3 centre_b_now = sb.inv_mass > 0 ? rotate(sb.dq, m.centre_b) : m.centre_b;
     const Vec3 moved = (sa.dp - sb.dp) + (centre_a_now - centre_b_now) - (m.centre_a - m.centre_b);
-    const Vec3 drift = first.softness.bias_rate * (m.drift + moved);
-    v1 += drift.dot(first.tangent1);
-    v2 += drift.dot(first.tangent2);
-    mass_scale = first.softness.mass_scale;
-    impulse_scale = first.softness.impulse_scale;
+    const Vec3 drift = m.softness.bias_rate * (m.drift + moved);
+    v1 += drift.dot(m.tangent1);
+    v2 += drift.dot(m.tangent2);
+    mass_scale = m.softness.mass_scale;
+    impulse_scale = m.softness.impulse_scale;
   }
   const Real old1 = m.tangent_impulse1, old2 = m.tangent_impulse2;
   m.tangent_impulse1 += -m.tangent_mass1 * mass_scale * v1 - impulse_scale * old1;
@@ -424,7 +433,7 @@ void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodySta
   if (m.twist_radius > 0) {
     const Real old_twist = m.twist_impulse;
     const Real twist_limit = limit * m.twist_radius;
-    m.twist_impulse = std::clamp(old_twist - m.twist_mass * (sa.w - sb.w).dot(first.normal), -twist_limit, twist_limit);
+    m.twist_impulse = std::clamp(old_twist - m.twist_mass * (sa.w - sb.w).dot(m.normal), -twist_limit, twist_limit);
     twist = m.twist_impulse - old_twist;
   }
   apply_friction(m, sa, sb, m.tangent_impulse1 - old1, m.tangent_impulse2 - old2, twist);
@@ -434,13 +443,12 @@ void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodySta
 // time: so a hit passes along a row of touching bodies as in Newton's cradle, instead of being
 // shared out inelastically first. Slower hits (resting contact) are left to the solver.
 bool ContactSolver::bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real h) {
-  const ContactConstraint& first = constraints_[m.first];
-  if (m.bounced || first.restitution == 0) return false;
+  if (m.bounced || m.restitution == 0) return false;
   // Cheap first: is any point closing fast enough to bounce at all?
   bool closing = false;
   for (int i = 0; i < m.count && !closing; ++i) {
-    const ContactConstraint& c = constraints_[m.first + i];
-    closing = (sa.v - sb.v).dot(c.normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n) < -settings_.restitution_threshold;
+    const PointRow& c = rows_[m.first + i];
+    closing = (sa.v - sb.v).dot(m.normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n) < -settings_.restitution_threshold;
   }
   if (!closing) return false;
 
@@ -484,7 +492,7 @@ bool ContactSolver::bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, 
   for (int iteration = 0; iteration < (hit_count == 1 ? 1 : 8); ++iteration) {
     for (int k = 0; k < hit_count; ++k) {
       Hit& hit = hits[k];
-      const Vec3& normal = constraints_[hit.index].normal;
+      const Vec3& normal = m.normal;
       const Real vn = relative_velocity(sa, sb, hit.ra, hit.rb).dot(normal);
       const Real new_impulse = std::max(hit.impulse + hit.normal_mass * (hit.target - vn), Real(0));
       apply_impulse(sa, sb, hit.ra, hit.rb, (new_impulse - hit.impulse) * normal);
@@ -496,17 +504,17 @@ bool ContactSolver::bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, 
   Real impulse_sum = 0;
   Vec3 ra = Vec3::Zero(), rb = Vec3::Zero();
   for (int k = 0; k < hit_count; ++k) {
-    constraints_[hits[k].index].total_normal_impulse += hits[k].impulse;
+    rows_[hits[k].index].total_normal_impulse += hits[k].impulse;
     impulse_sum += hits[k].impulse;
     ra += hits[k].ra / hit_count;
     rb += hits[k].rb / hit_count;
   }
-  if (first.friction > 0 && impulse_sum > 0) {
+  if (m.friction > 0 && impulse_sum > 0) {
     const Vec3 dv = relative_velocity(sa, sb, ra, rb);
-    Real j1 = -safe_inverse(inverse_effective_mass(sa, sb, ra, rb, first.tangent1)) * dv.dot(first.tangent1);
-    Real j2 = -safe_inverse(inverse_effective_mass(sa, sb, ra, rb, first.tangent2)) * dv.dot(first.tangent2);
-    clamp_to_disc(j1, j2, first.friction * impulse_sum);
-    apply_impulse(sa, sb, ra, rb, j1 * first.tangent1 + j2 * first.tangent2);
+    Real j1 = -safe_inverse(inverse_effective_mass(sa, sb, ra, rb, m.tangent1)) * dv.dot(m.tangent1);
+    Real j2 = -safe_inverse(inverse_effective_mass(sa, sb, ra, rb, m.tangent2)) * dv.dot(m.tangent2);
+    clamp_to_disc(j1, j2, m.friction * impulse_sum);
+    apply_impulse(sa, sb, ra, rb, j1 * m.tangent1 + j2 * m.tangent2);
     m.total_tangent_impulse1 += j1;
     m.total_tangent_impulse2 += j2;
   }
@@ -529,7 +537,7 @@ void ContactSolver::shift_bounce(int index, std::vector<BodyState>& states) {
   if (m.bounce_shift == 0) return;
   BodyState& sa = states[m.a];
   BodyState& sb = states[m.b];
-  const Real parting = (sa.v - sb.v).dot(constraints_[m.first].normal);
+  const Real parting = (sa.v - sb.v).dot(m.normal);
   // Only while the pair parts at no less than half its bounce: one that barely parts (the bodies
   // around took the hit up) would be shifted by seconds of its velocity. Measured in a heap of
   // 1000 boxes with e = 0.5, before this rule: a shift of -162 s, a box thrown out at 159 m/s.
@@ -543,7 +551,7 @@ void ContactSolver::shift_bounce(int index, std::vector<BodyState>& states) {
 
 void ContactSolver::add_to_totals(int index) {
   ManifoldConstraint& m = manifolds_[index];
-  for (int i = 0; i < m.count; ++i) constraints_[m.first + i].total_normal_impulse += constraints_[m.first + i].normal_impulse;
+  for (int i = 0; i < m.count; ++i) rows_[m.first + i].total_normal_impulse += rows_[m.first + i].normal_impulse;
   m.total_tangent_impulse1 += m.tangent_impulse1;
   m.total_tangent_impulse2 += m.tangent_impulse2;
 }
@@ -554,6 +562,10 @@ void ContactSolver::store_impulses() {
   loads_.resize(manifolds_.size());
   schedule_.for_each_step(*team_, [&](int index) {
     const ManifoldConstraint& m = manifolds_[index];
+    for (int i = 0; i < m.count; ++i) {  // for the records and the next step's warm start
+      constraints_[m.first + i].normal_impulse = rows_[m.first + i].normal_impulse;
+      constraints_[m.first + i].total_normal_impulse = rows_[m.first + i].total_normal_impulse;
+    }
     ManifoldLoad& load = loads_[index];
     load = {m.a, m.b, 0, 0, constraints_[m.first].normal};
     for (int i = 0; i < m.count; ++i) {

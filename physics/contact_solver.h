@@ -62,11 +62,30 @@ inline Real current_separation(const ContactConstraint& c, const BodyState& sa, 
   return moved.dot(c.normal) + c.adjusted_separation;
 }
 
+// What the sweeps read and write of one point, packed: a manifold's points share cache lines (its
+// ContactConstraints, which the records, the warm start and the teaching methods read, span six
+// lines each). The copies of a ContactConstraint's fields, fixed for the step, and its impulses.
+struct PointRow {
+  Vec3 anchor_a, anchor_b;
+  Vec3 ra_cross_n, rb_cross_n;
+  Vec3 angular_a, angular_b;
+  Real adjusted_separation = 0;
+  Real normal_mass = 0;
+  Real normal_impulse = 0;             // this sub-step's
+  Real total_normal_impulse = 0;       // over the step
+};
+
 // The points between one pair of bodies, and their shared friction.
 struct alignas(64) ManifoldConstraint {
   int a = -1, b = -1;
-  int first = 0, count = 0;            // its points in the constraint list
+  int first = 0, count = 0;            // its points in the constraint (and row) list
   bool turns_a = true, turns_b = true; // whether the body's turning moves its points along the normal
+  bool slipped = false;
+  bool bounced = false;                // restitution applied this step
+  // Its points', which share them (one pair, one normal).
+  Vec3 normal, tangent1, tangent2;
+  Softness softness;
+  Real friction = 0, restitution = 0;
   Vec3 centre_a = Vec3::Zero(), centre_b = Vec3::Zero();  // the points' centroid relative to each centre
   Real coupling[4][4] = {};            // d(normal velocity at i) / d(impulse at j), for the points
   Real tangent_mass1 = 0, tangent_mass2 = 0, twist_mass = 0;
@@ -79,13 +98,11 @@ struct alignas(64) ManifoldConstraint {
   Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;  // this sub-step's
   // Static friction's anchor: where the pair first touched, in each body's frame, and how far A
   // has slid from it over B at step start. Friction pulls that drift back until it slips.
-  Vec3 local_anchor_a = Vec3::Zero(), local_anchor_b = Vec3::Zero();
   Vec3 drift = Vec3::Zero();
-  bool slipped = false;
   Real total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
-  bool bounced = false;                // restitution applied this step
   Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
   Real bounce_speed = 0;               // m/s, the speed the pair parts at after its hit
+  Vec3 local_anchor_a = Vec3::Zero(), local_anchor_b = Vec3::Zero();
 };
 
 // A manifold's load at the end of a step, for StackSink: its last sub-step's impulse and the sum of
@@ -148,6 +165,7 @@ class ContactSolver {
   bool bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real h);
 
   std::vector<ContactConstraint> constraints_;
+  std::vector<PointRow> rows_;  // the sweeps' part of each constraint, at the same index
   std::vector<ManifoldConstraint> manifolds_;
   std::vector<ManifoldLoad> loads_;  // per manifold, at the last store_impulses()
   std::vector<std::pair<int, int>> groups_;  // each manifold's contacts [first, end), in the contacts' order
