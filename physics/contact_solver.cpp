@@ -42,36 +42,6 @@ bool clamp_to_disc(Real& j1, Real& j2, Real limit, Real slip = INFINITY) {
   return length_squared > slip * slip;
 }
 
-// A manifold point's normal row during one solve: its velocity along the normal now, its target
-// (bias), soft mass and impulse.
-struct NormalRow {
-  PointRow* c;
-  int point;
-  Real vn, bias, mass, impulse_scale, impulse, start;
-};
-
-// One Gauss-Seidel pass over N rows that see each other through the coupling matrix, first to last
-// or last to first. N and the direction are known to the compiler, so that the rows' velocities
-// stay in registers: each row waits on the one before.
-template <int N, bool Backwards>
-void solve_rows(NormalRow* rows, const Real (&coupling)[4][4]) {
-  Real vn[N], impulse[N], c[N][N];
-  for (int i = 0; i < N; ++i) {
-    vn[i] = rows[i].vn;
-    impulse[i] = rows[i].impulse;
-    for (int j = 0; j < N; ++j) c[i][j] = coupling[rows[i].point][rows[j].point];
-  }
-  for (int step = 0; step < N; ++step) {
-    const int k = Backwards ? N - 1 - step : step;
-    const NormalRow& row = rows[k];
-    const Real new_impulse = std::max(impulse[k] - row.mass * (vn[k] + row.bias) - row.impulse_scale * impulse[k], Real(0));
-    const Real applied = new_impulse - impulse[k];
-    impulse[k] = new_impulse;
-    for (int j = 0; j < N; ++j) vn[j] += c[j][k] * applied;
-  }
-  for (int i = 0; i < N; ++i) rows[i].impulse = impulse[i];
-}
-
 // One contact point's constraint, without its warm start.
 ContactConstraint make_constraint(const Contact& contact, const std::vector<Body>& bodies, const std::vector<BodyState>& states,
                                   const std::vector<int>& slots, const ContactSolverSettings& settings, const Vec3& gravity,
@@ -119,7 +89,11 @@ void ContactSolver::plan(const std::vector<Contact>& contacts, const std::vector
   std::vector<SweepItem> items(groups_.size());
   for (size_t k = 0; k < groups_.size(); ++k) {
     const Contact& contact = contacts[groups_[k].first];
-    items[k] = {moving(contact.body_a), moving(contact.body_b), bodies[contact.body_a].position, bodies[contact.body_b].position};
+    // A manifold that can bounce is solved alone, in the contacts' order: a hit then passes along a
+    // row of touching bodies within one sub-step (Newton's cradle), and pairs would reorder them.
+    const bool can_bounce = mix_restitution(bodies[contact.body_a].material.restitution, bodies[contact.body_b].material.restitution) > 0;
+    items[k] = {moving(contact.body_a), moving(contact.body_b), bodies[contact.body_a].position, bodies[contact.body_b].position,
+                can_bounce ? 0 : groups_[k].second - groups_[k].first};
   }
   schedule_.plan(items, int(bodies.size()), team.size());
 }
@@ -150,7 +124,6 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   h_ = h;
   manifolds_.resize(order.size());
   constraints_.resize(contacts.size());
-  rows_.resize(contacts.size());
   constraint_of_contact_.resize(contacts.size());
   first_of_step_.resize(order.size());
   pairs_.resize(order.size());
@@ -160,6 +133,22 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
     for (int i = first; i < end; ++i) constraint_of_contact_[i] = int(next++);
     pairs_[order[step]] = {pair_key(contacts[first].body_a, contacts[first].body_b), int(step)};
   }
+  // Blocks of two manifolds side by side where the schedule paired them, else of one.
+  world_slot_ = int(states.size()) - 1;
+  lane_of_step_.resize(order.size());
+  int blocks = 0, points = 0;
+  for (int step = 0; step < int(order.size()); ++blocks) {
+    const int width = schedule_.paired(step) ? 2 : 1;
+    for (int l = 0; l < width; ++l) lane_of_step_[step + l] = {blocks, l};
+    step += width;
+  }
+  lanes_.resize(blocks);
+  for (int step = 0, block = 0; step < int(order.size()); ++block) {
+    lanes_[block].first_point = points;
+    points += groups_[order[step]].second - groups_[order[step]].first;
+    step += schedule_.paired(step) ? 2 : 1;
+  }
+  lane_points_.resize(points);
   find_previous_pairs();
   // Each thread builds the manifolds it sweeps, from the states and bodies it loaded.
   schedule_.run(*team_, [&](int thread) {
@@ -182,17 +171,13 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
         }
       }
       prepare_manifold(m, bodies[contacts[first].body_a], bodies[contacts[first].body_b], states);
-      for (int i = 0; i < m.count; ++i) {
-        const ContactConstraint& c = constraints_[m.first + i];
-        rows_[m.first + i] = {c.anchor_a, c.anchor_b, c.ra_cross_n, c.rb_cross_n, c.angular_a, c.angular_b,
-                              c.adjusted_separation, c.normal_mass, c.normal_impulse, 0};
-      }
       if (same_pair != other_pair) {
         warm_start_friction(m, previous_manifolds_[previous_pairs_[other_pair - 1].manifold], bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
         m.tangent_impulse1 *= warm_scale;
         m.tangent_impulse2 *= warm_scale;
         m.twist_impulse *= warm_scale;
       }
+      fill_lanes(int(step), m);
     });
   });
 }
@@ -276,15 +261,17 @@ void ContactSolver::warm_start_friction(ManifoldConstraint& m, const ManifoldCon
 }
 
 void ContactSolver::warm_start(std::vector<BodyState>& states) {
-  schedule_.sweep(*team_, [&](int index) { warm_start_manifold(index, states); });
+  schedule_.sweep(*team_, [&](int index, int width) { warm_start_manifolds(index, width, states); });
 }
 
 void ContactSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_bias) {
-  schedule_.sweep(*team_, [&](int index) { solve_manifold(index, states, inv_h, use_bias); });
+  schedule_.sweep(*team_, [&](int index, int width) { solve_manifolds(index, width, states, inv_h, use_bias); });
 }
 
 void ContactSolver::apply_bounce_shifts(std::vector<BodyState>& states) {
-  schedule_.sweep(*team_, [&](int index) { shift_bounce(index, states); });
+  schedule_.sweep(*team_, [&](int index, int width) {
+    for (int k = 0; k < width; ++k) shift_bounce(index + k, states);
+  });
 }
 
 void ContactSolver::end_substep() {
@@ -292,162 +279,299 @@ void ContactSolver::end_substep() {
   backwards_ = !backwards_;
 }
 
-void ContactSolver::warm_start_manifold(int index, std::vector<BodyState>& states) const {
-  const ManifoldConstraint& m = manifolds_[index];
-  BodyState& sa = states[m.a];
-  BodyState& sb = states[m.b];
-  // The points share the normal: one sum of their impulses, added to each body once with friction's.
-  Real normal_sum = 0;
-  Vec3 turn_a = m.tangent_impulse1 * m.turn_a1 + m.tangent_impulse2 * m.turn_a2 + m.twist_impulse * m.twist_a;
-  Vec3 turn_b = m.tangent_impulse1 * m.turn_b1 + m.tangent_impulse2 * m.turn_b2 + m.twist_impulse * m.twist_b;
-  for (int i = 0; i < m.count; ++i) {
-    const PointRow& c = rows_[m.first + i];
-    normal_sum += c.normal_impulse;
-    turn_a += c.normal_impulse * c.angular_a;
-    turn_b += c.normal_impulse * c.angular_b;
+// Copies a prepared manifold into its lane of its block (and empties the second lane of a block
+// with one manifold).
+void ContactSolver::fill_lanes(int step, const ManifoldConstraint& m) {
+  const auto [index, l] = lane_of_step_[step];
+  ManifoldLanes& block = lanes_[index];
+  if (l == 0) {
+    const int first_point = block.first_point;
+    block = ManifoldLanes{};
+    block.points = m.count;
+    block.first_point = first_point;
+    block.a[1] = block.b[1] = world_slot_;
+    for (int i = 0; i < m.count; ++i) lane_points_[first_point + i] = PointLanes{};
   }
-  const Vec3 linear = normal_sum * m.normal + m.tangent_impulse1 * m.tangent1 + m.tangent_impulse2 * m.tangent2;
-  add_velocity(sa, sa.inv_mass * linear, turn_a);
-  add_velocity(sb, -(sb.inv_mass * linear), -turn_b);
+  block.a[l] = m.a;
+  block.b[l] = m.b;
+  set_lane(block.normal, l, m.normal);
+  set_lane(block.tangent1, l, m.tangent1);
+  set_lane(block.tangent2, l, m.tangent2);
+  block.bias_rate[l] = m.softness.bias_rate;
+  block.mass_scale[l] = m.softness.mass_scale;
+  block.impulse_scale[l] = m.softness.impulse_scale;
+  block.friction[l] = m.friction;
+  block.turns_a[l] = m.turns_a;
+  block.turns_b[l] = m.turns_b;
+  for (int i = 0; i < m.count; ++i)
+    for (int j = 0; j < m.count; ++j) block.coupling[i][j][l] = m.coupling[i][j];
+  block.tangent_mass1[l] = m.tangent_mass1;
+  block.tangent_mass2[l] = m.tangent_mass2;
+  block.twist_mass[l] = m.twist_mass;
+  block.twist_radius[l] = m.twist_radius;
+  set_lane(block.ra_cross_t1, l, m.ra_cross_t1);
+  set_lane(block.ra_cross_t2, l, m.ra_cross_t2);
+  set_lane(block.rb_cross_t1, l, m.rb_cross_t1);
+  set_lane(block.rb_cross_t2, l, m.rb_cross_t2);
+  set_lane(block.turn_a1, l, m.turn_a1);
+  set_lane(block.turn_a2, l, m.turn_a2);
+  set_lane(block.turn_b1, l, m.turn_b1);
+  set_lane(block.turn_b2, l, m.turn_b2);
+  set_lane(block.twist_a, l, m.twist_a);
+  set_lane(block.twist_b, l, m.twist_b);
+  set_lane(block.centre_a, l, m.centre_a);
+  set_lane(block.centre_b, l, m.centre_b);
+  set_lane(block.drift, l, m.drift);
+  block.tangent_impulse1[l] = m.tangent_impulse1;
+  block.tangent_impulse2[l] = m.tangent_impulse2;
+  block.twist_impulse[l] = m.twist_impulse;
+  for (int i = 0; i < m.count; ++i) {
+    const ContactConstraint& c = constraints_[m.first + i];
+    PointLanes& p = lane_points_[block.first_point + i];
+    set_lane(p.anchor_a, l, c.anchor_a);
+    set_lane(p.anchor_b, l, c.anchor_b);
+    set_lane(p.ra_cross_n, l, c.ra_cross_n);
+    set_lane(p.rb_cross_n, l, c.rb_cross_n);
+    set_lane(p.angular_a, l, c.angular_a);
+    set_lane(p.angular_b, l, c.angular_b);
+    p.adjusted_separation[l] = c.adjusted_separation;
+    p.normal_mass[l] = c.normal_mass;
+    p.normal_impulse[l] = c.normal_impulse;
+  }
 }
 
-bool ContactSolver::solve_manifold(int index, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
-  ManifoldConstraint& m = manifolds_[index];
-  BodyState& sa = states[m.a];
-  BodyState& sb = states[m.b];
-  if (use_bias && bounce(m, sa, sb, 1 / inv_h)) return true;
-  solve_normals(m, states, inv_h, use_bias);
-  if (m.friction == 0) return false;
-  Real normal_sum = 0;
-  for (int i = 0; i < m.count; ++i) normal_sum += rows_[m.first + i].normal_impulse;
-  solve_friction(m, sa, sb, normal_sum, use_bias);
-  return false;
+// The step's impulses, from its lane back to its manifold and points: for the records, the loads
+// and the next step's warm start.
+void ContactSolver::copy_back(int step) {
+  const auto [index, l] = lane_of_step_[step];
+  const ManifoldLanes& block = lanes_[index];
+  ManifoldConstraint& m = manifolds_[step];
+  m.tangent_impulse1 = block.tangent_impulse1[l];
+  m.tangent_impulse2 = block.tangent_impulse2[l];
+  m.twist_impulse = block.twist_impulse[l];
+  m.total_tangent_impulse1 = block.total_tangent_impulse1[l];
+  m.total_tangent_impulse2 = block.total_tangent_impulse2[l];
+  if (block.slipped[l]) m.slipped = true;
+  for (int i = 0; i < m.count; ++i) {
+    constraints_[m.first + i].normal_impulse = lane_points_[block.first_point + i].normal_impulse[l];
+    constraints_[m.first + i].total_normal_impulse = lane_points_[block.first_point + i].total_normal_impulse[l];
+  }
 }
 
-void ContactSolver::solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
-  BodyState& sa = states[m.a];
-  BodyState& sb = states[m.b];
-  const Vec3 dv = sa.v - sb.v;
-  // The points share the normal: n . (dq r) = (dq^-1 n) . r turns the normal back once per body
-  // instead of turning every anchor (current_separation, for the manifold).
-  const Vec3& normal = m.normal;
-  const Real moved = (sa.dp - sb.dp).dot(normal);
-  const Vec3 normal_in_a = m.turns_a ? rotate(sa.dq.conjugate(), normal) : normal;
-  const Vec3 normal_in_b = m.turns_b ? rotate(sb.dq.conjugate(), normal) : normal;
-  // Each point's target, from its separation now (positions do not change during the passes),
-  // and its normal velocity now.
-  NormalRow rows[kMaxManifoldPoints];
-  int row_count = 0;
-  for (int i = 0; i < m.count; ++i) {
-    PointRow& c = rows_[m.first + i];
-    const Real separation = moved + normal_in_a.dot(c.anchor_a) - normal_in_b.dot(c.anchor_b) + c.adjusted_separation;
-    const Real vn = dv.dot(normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n);
-    NormalRow row{&c, i, vn, 0, c.normal_mass, 0, c.normal_impulse, c.normal_impulse};
-    if (separation > 0) {
-      // Speculative: may close the gap this sub-step, no further. The relax pass leaves it be:
-      // the next solve clamps it anyway, and slowing a body before it touches would lose the
-      // speed it hits with.
-      if (!use_bias) continue;
-      row.bias = separation * inv_h;
-    } else if (use_bias) {
-      row.bias = std::max(m.softness.bias_rate * separation, -settings_.max_push_velocity);
-      row.mass *= m.softness.mass_scale;
-      row.impulse_scale = m.softness.impulse_scale;
-    }
-    rows[row_count++] = row;
-  }
+void ContactSolver::warm_start_manifolds(int index, int, std::vector<BodyState>& states) const {
+  warm_start_lanes(lanes_[lane_of_step_[index].block], states);
+}
 
-  // Accumulated and clamped to push only; the target is "stop approaching" (restitution is
-  // bounce()'s). Gauss-Seidel point after point, as if each impulse were applied to the bodies at
-  // once; but the points of one pair see each other only through the coupling matrix, so the pass
-  // updates their normal velocities alone, and the bodies get the sum afterwards (the same
-  // arithmetic, without a chain through the bodies' velocities after every point). One pass, in
-  // turn forwards and backwards from one sub-step to the next: always forwards, the first point
-  // gets more than its share, and a wall of boxes one box thick (the 21-box pyramid) starts to
-  // sway; two passes forwards also hold, at 8 % more time on the 210 pyramid.
-  switch (row_count * 2 + backwards_) {
-    case 2: solve_rows<1, false>(rows, m.coupling); break;
-    case 3: solve_rows<1, true>(rows, m.coupling); break;
-    case 4: solve_rows<2, false>(rows, m.coupling); break;
-    case 5: solve_rows<2, true>(rows, m.coupling); break;
-    case 6: solve_rows<3, false>(rows, m.coupling); break;
-    case 7: solve_rows<3, true>(rows, m.coupling); break;
-    case 8: solve_rows<4, false>(rows, m.coupling); break;
-    case 9: solve_rows<4, true>(rows, m.coupling); break;
+// Last sub-step's impulses, applied again. The points share the normal: one sum of their
+// impulses, added to each body once with friction's.
+void ContactSolver::warm_start_lanes(const ManifoldLanes& block, std::vector<BodyState>& states) const {
+  const Real2 j1 = block.tangent_impulse1, j2 = block.tangent_impulse2, twist = block.twist_impulse;
+  Real2 normal_sum = splat(0);
+  V3 turn_a = j1 * block.turn_a1 + j2 * block.turn_a2 + twist * block.twist_a;
+  V3 turn_b = j1 * block.turn_b1 + j2 * block.turn_b2 + twist * block.twist_b;
+  for (int i = 0; i < block.points; ++i) {
+    const PointLanes& p = lane_points_[block.first_point + i];
+    normal_sum = normal_sum + p.normal_impulse;
+    turn_a = turn_a + p.normal_impulse * p.angular_a;
+    turn_b = turn_b + p.normal_impulse * p.angular_b;
+  }
+  const V3 linear = normal_sum * block.normal + j1 * block.tangent1 + j2 * block.tangent2;
+  for (int l = 0; l < 2; ++l) {
+    BodyState& sa = states[block.a[l]];
+    BodyState& sb = states[block.b[l]];
+    const Vec3 linear_l = lane(linear, l);
+    add_velocity(sa, sa.inv_mass * linear_l, lane(turn_a, l));
+    add_velocity(sb, -(sb.inv_mass * linear_l), -lane(turn_b, l));
+  }
+}
+
+bool ContactSolver::solve_manifolds(int index, int width, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
+  ManifoldLanes& block = lanes_[lane_of_step_[index].block];
+  // A manifold that bounces is answered by bounce() alone in this solve.
+  Mask2 solved = {0, 0};
+  bool bounced = false;
+  for (int l = 0; l < width; ++l) {
+    ManifoldConstraint& m = manifolds_[index + l];
+    if (use_bias && bounce(index + l, states[m.a], states[m.b], 1 / inv_h)) bounced = true;
+    else solved[l] = -1;
+  }
+  if (!any(solved)) return bounced;
+  switch ((block.points - 1) * 2 + backwards_) {
+    case 0: solve_lanes<1, false>(block, solved, states, inv_h, use_bias); break;
+    case 1: solve_lanes<1, true>(block, solved, states, inv_h, use_bias); break;
+    case 2: solve_lanes<2, false>(block, solved, states, inv_h, use_bias); break;
+    case 3: solve_lanes<2, true>(block, solved, states, inv_h, use_bias); break;
+    case 4: solve_lanes<3, false>(block, solved, states, inv_h, use_bias); break;
+    case 5: solve_lanes<3, true>(block, solved, states, inv_h, use_bias); break;
+    case 6: solve_lanes<4, false>(block, solved, states, inv_h, use_bias); break;
+    case 7: solve_lanes<4, true>(block, solved, states, inv_h, use_bias); break;
     default: break;
   }
-  Vec3 linear = Vec3::Zero(), turn_a = Vec3::Zero(), turn_b = Vec3::Zero();
-  for (int k = 0; k < row_count; ++k) {
-    PointRow& c = *rows[k].c;
-    const Real applied = rows[k].impulse - rows[k].start;
-    c.normal_impulse = rows[k].impulse;
-    linear += applied * normal;
-    turn_a += applied * c.angular_a;
-    turn_b += applied * c.angular_b;
+  return bounced;
+}
+
+// The lanes `solved` of a block of manifolds with N points each, which move no body in common.
+//
+// Normal rows: accumulated and clamped to push only; the target is "stop approaching" (restitution
+// is bounce()'s), with a soft position correction in the biased solve. Gauss-Seidel point after
+// point, as if each impulse were applied to the bodies at once; but the points of one pair see
+// each other only through the coupling matrix, so the pass updates their normal velocities alone,
+// and the bodies get the sum afterwards (the same arithmetic, without a chain through the bodies'
+// velocities after every point). One pass, in turn forwards and backwards from one sub-step to
+// the next: always forwards, the first point gets more than its share, and a wall of boxes one
+// box thick (the 21-box pyramid) starts to sway.
+//
+// Friction: Coulomb friction at the points' centroid, within the disc of radius mu times their
+// total normal impulse, and a twist about the normal within mu times that times the points'
+// spread; static friction also pulls back the drift from where the pair first touched.
+template <int N, bool Backwards>
+void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
+  BodyState* sa[2] = {&states[block.a[0]], &states[block.a[1]]};
+  BodyState* sb[2] = {&states[block.b[0]], &states[block.b[1]]};
+  PointLanes* points = &lane_points_[block.first_point];
+  V3 va = lanes(sa[0]->v, sa[1]->v), wa = lanes(sa[0]->w, sa[1]->w);
+  V3 vb = lanes(sb[0]->v, sb[1]->v), wb = lanes(sb[0]->w, sb[1]->w);
+  const Real2 inv_mass_a{sa[0]->inv_mass, sa[1]->inv_mass}, inv_mass_b{sb[0]->inv_mass, sb[1]->inv_mass};
+  const V3 dp = lanes(sa[0]->dp, sa[1]->dp) - lanes(sb[0]->dp, sb[1]->dp);
+  const Q4 dq_a = lanes(sa[0]->dq, sa[1]->dq), dq_b = lanes(sb[0]->dq, sb[1]->dq);
+  const V3& normal = block.normal;
+
+  // Each point's separation now (positions do not change during the passes) and normal velocity.
+  // The points share the normal: n . (dq r) = (dq^-1 n) . r turns the normal back once per body
+  // instead of turning every anchor. A sphere's surface stays put as it turns; a still body's dq is 1.
+  auto turned_back = [&](const Q4& dq, Real2 turns) {
+    const Mask2 mask = turns != 0;
+    return any(mask) ? select(mask, rotate(conjugate(dq), normal), normal) : normal;
+  };
+  const V3 normal_in_a = turned_back(dq_a, block.turns_a);
+  const V3 normal_in_b = turned_back(dq_b, block.turns_b);
+  const Real2 moved = dot(dp, normal);
+  const Real2 dv_n = dot(va - vb, normal);
+  const Real2 max_push = splat(-settings_.max_push_velocity);
+  // Row k's new impulse is max(rhs_k - mass_k vn_k, 0), with rhs = impulse - mass bias - leak impulse.
+  Real2 vn[N], mass[N], rhs[N], impulse[N];
+  for (int i = 0; i < N; ++i) {
+    const PointLanes& p = points[i];
+    const Real2 separation = moved + dot(normal_in_a, p.anchor_a) - dot(normal_in_b, p.anchor_b) + p.adjusted_separation;
+    vn[i] = dv_n + dot(wa, p.ra_cross_n) - dot(wb, p.rb_cross_n);
+    impulse[i] = p.normal_impulse;
+    // Speculative (apart): may close the gap this sub-step, no further. The relax pass leaves it
+    // be (mass 0): the next solve clamps it anyway, and slowing a body before it touches would
+    // lose the speed it hits with.
+    const Mask2 apart = separation > 0;
+    if (use_bias) {
+      const Real2 soft_bias = block.bias_rate * separation;
+      const Real2 bias = select(apart, separation * inv_h, select(soft_bias < max_push, max_push, soft_bias));
+      mass[i] = select(apart, p.normal_mass, p.normal_mass * block.mass_scale);
+      rhs[i] = impulse[i] - mass[i] * bias - select(apart, splat(0), block.impulse_scale) * impulse[i];
+    } else {
+      mass[i] = select(apart, splat(0), p.normal_mass);
+      rhs[i] = impulse[i];
+    }
   }
-  add_velocity(sa, sa.inv_mass * linear, turn_a);
-  add_velocity(sb, -(sb.inv_mass * linear), -turn_b);
-}
+  Real2 applied_sum = splat(0);
+  V3 turn_a{applied_sum, applied_sum, applied_sum}, turn_b = turn_a;
+  for (int step = 0; step < N; ++step) {
+    const int k = Backwards ? N - 1 - step : step;
+    const Real2 new_impulse = max0(rhs[k] - mass[k] * vn[k]);
+    const Real2 applied = new_impulse - impulse[k];
+    impulse[k] = new_impulse;
+    applied_sum = applied_sum + applied;
+    turn_a = turn_a + applied * points[k].angular_a;
+    turn_b = turn_b + applied * points[k].angular_b;
+    for (int j = 0; j < N; ++j)
+      if (j != k) vn[j] = vn[j] + block.coupling[j][k] * applied;
+  }
+  Real2 normal_sum = splat(0);
+  for (int i = 0; i < N; ++i) normal_sum = normal_sum + impulse[i];
+  const V3 linear = applied_sum * normal;
+  va = va + inv_mass_a * linear;
+  wa = wa + turn_a;
+  vb = vb - inv_mass_b * linear;
+  wb = wb - turn_b;
 
-// Tangent impulses j1, j2 at the points' centroid and a twist about the normal: +j on A, -j on B.
-void ContactSolver::apply_friction(const ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real j1, Real j2, Real twist) const {
-  const Vec3 linear = j1 * m.tangent1 + j2 * m.tangent2;
-  add_velocity(sa, sa.inv_mass * linear, j1 * m.turn_a1 + j2 * m.turn_a2 + twist * m.twist_a);
-  add_velocity(sb, -(sb.inv_mass * linear), -(j1 * m.turn_b1 + j2 * m.turn_b2 + twist * m.twist_b));
-}
-
-// Coulomb friction at the points' centroid, within the disc of radius mu times their total
-// normal impulse, and a twist about the normal within mu times that times the points' spread.
-void ContactSolver::solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum, bool use_bias) {
-  const Real limit = m.friction * normal_sum;
-  if (limit == 0) {
+  // Friction, if either lane has any.
+  Real2 j1 = block.tangent_impulse1, j2 = block.tangent_impulse2, twist = block.twist_impulse;
+  Mask2 slipped = {0, 0};
+  if (any(block.friction != 0)) {
+    const Real2 limit = block.friction * normal_sum;
+    const V3 dv = va - vb;
+    Real2 v1 = dot(dv, block.tangent1) + dot(wa, block.ra_cross_t1) - dot(wb, block.rb_cross_t1);
+    Real2 v2 = dot(dv, block.tangent2) + dot(wa, block.ra_cross_t2) - dot(wb, block.rb_cross_t2);
+    Real2 mass_scale = splat(1), leak = splat(0);
+    if (use_bias) {
+      // Without the pull back to the anchor, tiny slips add up and stacks creep.
+      auto turned = [&](const Q4& dq, const V3& centre, Real2 inv_mass) {  // a still body has not turned
+        const Mask2 moves = inv_mass > 0;
+        return any(moves) ? select(moves, rotate(dq, centre), centre) : centre;
+      };
+      const V3 moved_centre = dp + (turned(dq_a, block.centre_a, inv_mass_a) - turned(dq_b, block.centre_b, inv_mass_b)) -
+                              (block.centre_a - block.centre_b);
+      const V3 drift = block.bias_rate * (block.drift + moved_centre);
+      v1 = v1 + dot(drift, block.tangent1);
+      v2 = v2 + dot(drift, block.tangent2);
+      mass_scale = block.mass_scale;
+      leak = block.impulse_scale;
+    }
+    const Real2 old1 = j1, old2 = j2, old_twist = twist;
+    j1 = old1 + (-block.tangent_mass1 * mass_scale * v1 - leak * old1);
+    j2 = old2 + (-block.tangent_mass2 * mass_scale * v2 - leak * old2);
+    // Within the Coulomb disc; asking for more than it (by a hair) means the pair slides.
+    const Real2 length_squared = j1 * j1 + j2 * j2;
+    const Mask2 outside = length_squared > limit * limit;
+    if (any(outside)) {
+      const Real2 scale = select(outside, limit / sqrt(length_squared), splat(1));
+      j1 = j1 * scale;
+      j2 = j2 * scale;
+      const Real2 slip = 1.0001 * limit + 1e-12;
+      slipped = outside & (length_squared > slip * slip);
+    }
+    const Real2 twist_limit = limit * block.twist_radius;
+    twist = select(block.twist_radius > 0, clamp(old_twist - block.twist_mass * dot(wa - wb, normal), -twist_limit, twist_limit), old_twist);
     // Not pressed together (a speculative pair): no friction, and nothing to anchor.
-    m.slipped = true;
-    if (m.tangent_impulse1 == 0 && m.tangent_impulse2 == 0 && m.twist_impulse == 0) return;
-    apply_friction(m, sa, sb, -m.tangent_impulse1, -m.tangent_impulse2, -m.twist_impulse);
-    m.tangent_impulse1 = m.tangent_impulse2 = m.twist_impulse = 0;
-    return;
+    const Mask2 unpressed = limit == 0;
+    slipped = slipped | unpressed;
+    j1 = select(unpressed, splat(0), j1);
+    j2 = select(unpressed, splat(0), j2);
+    twist = select(unpressed, splat(0), twist);
+    const Real2 applied1 = j1 - old1, applied2 = j2 - old2, applied_twist = twist - old_twist;
+    const V3 linear_friction = applied1 * block.tangent1 + applied2 * block.tangent2;
+    va = va + inv_mass_a * linear_friction;
+    wa = wa + (applied1 * block.turn_a1 + applied2 * block.turn_a2 + applied_twist * block.twist_a);
+    vb = vb - inv_mass_b * linear_friction;
+    wb = wb - (applied1 * block.turn_b1 + applied2 * block.turn_b2 + applied_twist * block.twist_b);
   }
-  const Vec3 dv = sa.v - sb.v;
-  Real v1 = dv.dot(m.tangent1) + sa.w.dot(m.ra_cross_t1) - sb.w.dot(m.rb_cross_t1);
-  Real v2 = dv.dot(m.tangent2) + sa.w.dot(m.ra_cross_t2) - sb.w.dot(m.rb_cross_t2);
-  // Static friction also undoes the drift from where the pair first touched, softly, as the
-  // normal rows undo penetration; without it tiny slips add up and stacks creep.
-  Real mass_scale = 1, impulse_scale = 0;
-  if (use_bias) {
-    const Vec3 centre_a_now = sa.inv_mass > 0 ? rotate(sa.dq, m.centre_a) : m.centre_a;  // a still body has not turned
-    const Vec3 centre_b_now = sb.inv_mass > 0 ? rotate(sb.dq, m.centre_b) : m.centre_b;
-    const Vec3 moved = (sa.dp - sb.dp) + (centre_a_now - centre_b_now) - (m.centre_a - m.centre_b);
-    const Vec3 drift = m.softness.bias_rate * (m.drift + moved);
-    v1 += drift.dot(m.tangent1);
-    v2 += drift.dot(m.tangent2);
-    mass_scale = m.softness.mass_scale;
-    impulse_scale = m.softness.impulse_scale;
-  }
-  const Real old1 = m.tangent_impulse1, old2 = m.tangent_impulse2;
-  m.tangent_impulse1 += -m.tangent_mass1 * mass_scale * v1 - impulse_scale * old1;
-  m.tangent_impulse2 += -m.tangent_mass2 * mass_scale * v2 - impulse_scale * old2;
-  if (clamp_to_disc(m.tangent_impulse1, m.tangent_impulse2, limit, 1.0001 * limit + 1e-12)) m.slipped = true;
 
-  Real twist = 0;
-  if (m.twist_radius > 0) {
-    const Real old_twist = m.twist_impulse;
-    const Real twist_limit = limit * m.twist_radius;
-    m.twist_impulse = std::clamp(old_twist - m.twist_mass * (sa.w - sb.w).dot(m.normal), -twist_limit, twist_limit);
-    twist = m.twist_impulse - old_twist;
+  // Only the solved lanes: the other bounced, or is empty.
+  for (int i = 0; i < N; ++i) points[i].normal_impulse = select(solved, impulse[i], points[i].normal_impulse);
+  block.tangent_impulse1 = select(solved, j1, block.tangent_impulse1);
+  block.tangent_impulse2 = select(solved, j2, block.tangent_impulse2);
+  block.twist_impulse = select(solved, twist, block.twist_impulse);
+  block.slipped = block.slipped | (slipped & solved);
+  for (int l = 0; l < 2; ++l) {
+    if (!solved[l]) continue;
+    // A still body's state is not even written: the other thread may be reading it.
+    if (sa[l]->inv_mass != 0) {
+      sa[l]->v = lane(va, l);
+      sa[l]->w = lane(wa, l);
+    }
+    if (sb[l]->inv_mass != 0) {
+      sb[l]->v = lane(vb, l);
+      sb[l]->w = lane(wb, l);
+    }
   }
-  apply_friction(m, sa, sb, m.tangent_impulse1 - old1, m.tangent_impulse2 - old2, twist);
 }
 
 // A collision (restitution) is answered in the sub-step in which the surfaces meet, one pair at a
 // time: so a hit passes along a row of touching bodies as in Newton's cradle, instead of being
 // shared out inelastically first. Slower hits (resting contact) are left to the solver.
-bool ContactSolver::bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real h) {
+bool ContactSolver::bounce(int step, BodyState& sa, BodyState& sb, Real h) {
+  ManifoldConstraint& m = manifolds_[step];
   if (m.bounced || m.restitution == 0) return false;
   // Cheap first: is any point closing fast enough to bounce at all?
   bool closing = false;
   for (int i = 0; i < m.count && !closing; ++i) {
-    const PointRow& c = rows_[m.first + i];
+    const ContactConstraint& c = constraints_[m.first + i];
     closing = (sa.v - sb.v).dot(m.normal) + sa.w.dot(c.ra_cross_n) - sb.w.dot(c.rb_cross_n) < -settings_.restitution_threshold;
   }
   if (!closing) return false;
@@ -501,10 +625,12 @@ bool ContactSolver::bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, 
   }
 
   // Friction during the hit, at the hit points' centroid, within mu times the hit's impulse.
+  const auto [block_index, l] = lane_of_step_[step];
+  ManifoldLanes& block = lanes_[block_index];
   Real impulse_sum = 0;
   Vec3 ra = Vec3::Zero(), rb = Vec3::Zero();
   for (int k = 0; k < hit_count; ++k) {
-    rows_[hits[k].index].total_normal_impulse += hits[k].impulse;
+    lane_points_[block.first_point + (hits[k].index - m.first)].total_normal_impulse[l] += hits[k].impulse;
     impulse_sum += hits[k].impulse;
     ra += hits[k].ra / hit_count;
     rb += hits[k].rb / hit_count;
@@ -515,8 +641,8 @@ bool ContactSolver::bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, 
     Real j2 = -safe_inverse(inverse_effective_mass(sa, sb, ra, rb, m.tangent2)) * dv.dot(m.tangent2);
     clamp_to_disc(j1, j2, m.friction * impulse_sum);
     apply_impulse(sa, sb, ra, rb, j1 * m.tangent1 + j2 * m.tangent2);
-    m.total_tangent_impulse1 += j1;
-    m.total_tangent_impulse2 += j2;
+    block.total_tangent_impulse1[l] += j1;
+    block.total_tangent_impulse2[l] += j2;
   }
 
   // Integrating the whole sub-step at `target` from `gap` would not leave the surfaces where the
@@ -549,11 +675,16 @@ void ContactSolver::shift_bounce(int index, std::vector<BodyState>& states) {
   m.bounce_shift = 0;
 }
 
-void ContactSolver::add_to_totals(int index) {
-  ManifoldConstraint& m = manifolds_[index];
-  for (int i = 0; i < m.count; ++i) rows_[m.first + i].total_normal_impulse += rows_[m.first + i].normal_impulse;
-  m.total_tangent_impulse1 += m.tangent_impulse1;
-  m.total_tangent_impulse2 += m.tangent_impulse2;
+// For a block's first step: its manifolds' sub-step impulses added to the step's totals.
+void ContactSolver::add_to_totals(int step) {
+  if (lane_of_step_[step].lane != 0) return;
+  ManifoldLanes& block = lanes_[lane_of_step_[step].block];
+  for (int i = 0; i < block.points; ++i) {
+    PointLanes& p = lane_points_[block.first_point + i];
+    p.total_normal_impulse = p.total_normal_impulse + p.normal_impulse;
+  }
+  block.total_tangent_impulse1 = block.total_tangent_impulse1 + block.tangent_impulse1;
+  block.total_tangent_impulse2 = block.total_tangent_impulse2 + block.tangent_impulse2;
 }
 
 void ContactSolver::store_impulses() {
@@ -561,11 +692,8 @@ void ContactSolver::store_impulses() {
   stored_h_ = h_;
   loads_.resize(manifolds_.size());
   schedule_.for_each_step(*team_, [&](int index) {
+    copy_back(index);
     const ManifoldConstraint& m = manifolds_[index];
-    for (int i = 0; i < m.count; ++i) {  // for the records and the next step's warm start
-      constraints_[m.first + i].normal_impulse = rows_[m.first + i].normal_impulse;
-      constraints_[m.first + i].total_normal_impulse = rows_[m.first + i].total_normal_impulse;
-    }
     ManifoldLoad& load = loads_[index];
     load = {m.a, m.b, 0, 0, constraints_[m.first].normal};
     for (int i = 0; i < m.count; ++i) {

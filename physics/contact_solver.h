@@ -5,6 +5,7 @@
 #pragma once
 #include "physics/body.h"
 #include "physics/contact.h"
+#include "physics/lanes.h"
 #include "physics/solver_state.h"
 #include "physics/sweep_schedule.h"
 #include "physics/thread_team.h"
@@ -62,19 +63,6 @@ inline Real current_separation(const ContactConstraint& c, const BodyState& sa, 
   return moved.dot(c.normal) + c.adjusted_separation;
 }
 
-// What the sweeps read and write of one point, packed: a manifold's points share cache lines (its
-// ContactConstraints, which the records, the warm start and the teaching methods read, span six
-// lines each). The copies of a ContactConstraint's fields, fixed for the step, and its impulses.
-struct PointRow {
-  Vec3 anchor_a, anchor_b;
-  Vec3 ra_cross_n, rb_cross_n;
-  Vec3 angular_a, angular_b;
-  Real adjusted_separation = 0;
-  Real normal_mass = 0;
-  Real normal_impulse = 0;             // this sub-step's
-  Real total_normal_impulse = 0;       // over the step
-};
-
 // The points between one pair of bodies, and their shared friction.
 struct alignas(64) ManifoldConstraint {
   int a = -1, b = -1;
@@ -103,6 +91,33 @@ struct alignas(64) ManifoldConstraint {
   Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
   Real bounce_speed = 0;               // m/s, the speed the pair parts at after its hit
   Vec3 local_anchor_a = Vec3::Zero(), local_anchor_b = Vec3::Zero();
+};
+
+// What the sweeps read and write, for two manifolds side by side (lanes.h): each field holds the
+// first manifold's value in lane 0 and the second's in lane 1. A manifold solved alone leaves lane
+// 1 empty (the still world's slot, no mass, no friction). Written by prepare() from the manifolds
+// and their points, and copied back to them by store_impulses().
+struct PointLanes {
+  V3 anchor_a, anchor_b, ra_cross_n, rb_cross_n, angular_a, angular_b;
+  Real2 adjusted_separation, normal_mass;
+  Real2 normal_impulse, total_normal_impulse;
+};
+
+struct alignas(64) ManifoldLanes {
+  int a[2], b[2];                  // slots
+  int points = 0;                  // each manifold's
+  int first_point = 0;             // in lane_points_
+  V3 normal, tangent1, tangent2;
+  Real2 bias_rate, mass_scale, impulse_scale, friction;
+  Real2 turns_a, turns_b;          // 1 where the body's turning moves the points along the normal
+  Real2 coupling[4][4];
+  Real2 tangent_mass1, tangent_mass2, twist_mass, twist_radius;
+  V3 ra_cross_t1, ra_cross_t2, rb_cross_t1, rb_cross_t2;
+  V3 turn_a1, turn_a2, turn_b1, turn_b2, twist_a, twist_b;
+  V3 centre_a, centre_b, drift;
+  Real2 tangent_impulse1, tangent_impulse2, twist_impulse;
+  Real2 total_tangent_impulse1, total_tangent_impulse2;
+  Mask2 slipped;
 };
 
 // A manifold's load at the end of a step, for StackSink: its last sub-step's impulse and the sum of
@@ -154,19 +169,27 @@ class ContactSolver {
   void find_previous_pairs();
   void prepare_manifold(ManifoldConstraint& m, const Body& body_a, const Body& body_b, const std::vector<BodyState>& states) const;
   void warm_start_friction(ManifoldConstraint& m, const ManifoldConstraint& previous, const Body& body_a, const Body& body_b) const;
-  void warm_start_manifold(int index, std::vector<BodyState>& states) const;
-  // Returns whether the manifold bounced (restitution, only with use_bias).
-  bool solve_manifold(int index, std::vector<BodyState>& states, Real inv_h, bool use_bias);
+  // The sweeps' work on manifold `index`, or on it and the next side by side (width 2; lanes.h).
+  void warm_start_manifolds(int index, int width, std::vector<BodyState>& states) const;
+  // Returns whether any bounced (restitution, only with use_bias).
+  bool solve_manifolds(int index, int width, std::vector<BodyState>& states, Real inv_h, bool use_bias);
+  void fill_lanes(int step, const ManifoldConstraint& m);
+  void warm_start_lanes(const ManifoldLanes& block, std::vector<BodyState>& states) const;
+  template <int N, bool Backwards>
+  void solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<BodyState>& states, Real inv_h, bool use_bias);
+  void copy_back(int step);
   void shift_bounce(int index, std::vector<BodyState>& states);
   void add_to_totals(int index);
-  void solve_normals(ManifoldConstraint& m, std::vector<BodyState>& states, Real inv_h, bool use_bias);
-  void solve_friction(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real normal_sum, bool use_bias);
-  void apply_friction(const ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real j1, Real j2, Real twist) const;
-  bool bounce(ManifoldConstraint& m, BodyState& sa, BodyState& sb, Real h);
+  bool bounce(int step, BodyState& sa, BodyState& sb, Real h);
 
   std::vector<ContactConstraint> constraints_;
-  std::vector<PointRow> rows_;  // the sweeps' part of each constraint, at the same index
   std::vector<ManifoldConstraint> manifolds_;
+  // The sweeps' data, two manifolds side by side, in the sweeps' order; and where each step's is.
+  std::vector<ManifoldLanes> lanes_;
+  std::vector<PointLanes> lane_points_;
+  struct LanePlace { int block, lane; };
+  std::vector<LanePlace> lane_of_step_;
+  int world_slot_ = 0;  // a still state, for a block's empty lane
   std::vector<ManifoldLoad> loads_;  // per manifold, at the last store_impulses()
   std::vector<std::pair<int, int>> groups_;  // each manifold's contacts [first, end), in the contacts' order
   std::vector<int> constraint_of_contact_;
@@ -182,7 +205,7 @@ class ContactSolver {
   bool impulses_stored_ = false;  // store_impulses() since the last prepare()
   Real h_ = 0, stored_h_ = 0;      // this step's sub-step, and the stored impulses'
   ContactSolverSettings settings_;
-  bool backwards_ = false;  // this sub-step's order of a manifold's points (solve_normals)
+  bool backwards_ = false;  // this sub-step's order of a manifold's points (solve_lanes)
   ThreadTeam* team_ = nullptr;
   SweepSchedule schedule_;
   // Per thread that sweeps (two at most): the last sub-step epoch in which one of its manifolds
@@ -200,10 +223,10 @@ void ContactSolver::substep(std::vector<BodyState>& states, Real h, IntegrateVel
   schedule_.run(*team_, [&](int thread) {
     schedule_.slot_share(thread, integrate_velocity);
     meet();
-    schedule_.sweep_share(thread, epoch, [&](int index) { warm_start_manifold(index, states); });
+    schedule_.sweep_share(thread, epoch, [&](int index, int width) { warm_start_manifolds(index, width, states); });
     meet();
     bool bounced = false;
-    schedule_.sweep_share(thread, epoch + 1, [&](int index) { bounced |= solve_manifold(index, states, 1 / h, true); });
+    schedule_.sweep_share(thread, epoch + 1, [&](int index, int width) { bounced |= solve_manifolds(index, width, states, 1 / h, true); });
     if (bounced) bounced_[thread].value.store(epoch, std::memory_order_relaxed);  // only threads 0 and 1 have manifolds
     meet();
     schedule_.slot_share(thread, integrate_position);
@@ -211,12 +234,14 @@ void ContactSolver::substep(std::vector<BodyState>& states, Real h, IntegrateVel
     // Most sub-steps nothing bounces (resting piles): then no sweep to take shifts back. The
     // barriers order the flags; every thread reads the same and takes the same way.
     if (bounced_[0].value.load(std::memory_order_relaxed) == epoch || bounced_[1].value.load(std::memory_order_relaxed) == epoch) {
-      schedule_.sweep_share(thread, epoch + 2, [&](int index) { shift_bounce(index, states); });
+      schedule_.sweep_share(thread, epoch + 2, [&](int index, int width) {
+        for (int k = 0; k < width; ++k) shift_bounce(index + k, states);
+      });
       meet();
     }
-    schedule_.sweep_share(thread, epoch + 3, [&](int index) {
-      solve_manifold(index, states, 1 / h, false);
-      add_to_totals(index);  // the relax pass is the sub-step's last word on this manifold
+    schedule_.sweep_share(thread, epoch + 3, [&](int index, int width) {
+      solve_manifolds(index, width, states, 1 / h, false);
+      add_to_totals(index);  // the relax pass is the sub-step's last word on them
     });
   });
   backwards_ = !backwards_;

@@ -7,8 +7,15 @@ namespace impulse::physics {
 namespace {
 
 // Below this many items a sweep takes a few microseconds: waking helpers would cost as much, and
-// the natural order is kept.
+// the natural order is kept (but for partners).
 constexpr size_t kMinDissectedItems = 256;
+// How far ahead in its part an item's partner may be: near, so that the sweep keeps its order and
+// its place in memory roughly.
+constexpr size_t kPartnerReach = 16;
+
+bool share_a_body(const SweepItem& x, const SweepItem& y) {
+  return (x.a >= 0 && (x.a == y.a || x.a == y.b)) || (x.b >= 0 && (x.b == y.a || x.b == y.b));
+}
 
 Vec3 item_position(const SweepItem& item) {
   if (item.a >= 0 && item.b >= 0) return (item.position_a + item.position_b) / 2;
@@ -20,12 +27,16 @@ Vec3 item_position(const SweepItem& item) {
 void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, int threads) {
   const size_t count = items.size();
   order_.resize(count);
-  for (size_t i = 0; i < count; ++i) order_[i] = int(i);
   slot_of_body_.resize(body_count);
   body_of_slot_.resize(body_count);
   for (int body = 0; body < body_count; ++body) slot_of_body_[body] = body_of_slot_[body] = body;
   lists_.clear();
-  if (count < kMinDissectedItems) return;
+  enum Part : uint8_t { crossing, left, right, right_after_crossing };
+  std::vector<uint8_t> part(count, left);
+  if (count < kMinDissectedItems) {
+    order_parts(items, part);
+    return;
+  }
 
   // The cut: the median of the items' positions along the axis where they spread most.
   Vec3 low = item_position(items[0]), high = low;
@@ -46,8 +57,7 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
   // that move a body of a crossing one last: the second thread, which sweeps the right ones, then
   // reaches them when the first has long solved the crossing ones, and need not wait.
   auto side = [&](const Vec3& p) { return p[axis] < cut ? 1 : 2; };
-  enum Part : uint8_t { crossing, left, right, right_after_crossing };
-  std::vector<uint8_t> part(count), crossed(body_count, 0);
+  std::vector<uint8_t> crossed(body_count, 0);
   for (size_t i = 0; i < count; ++i) {
     const SweepItem& item = items[i];
     const int sides = (item.a >= 0 ? side(item.position_a) : 0) | (item.b >= 0 ? side(item.position_b) : 0);
@@ -56,10 +66,7 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
   }
   for (size_t i = 0; i < count; ++i)
     if (part[i] == right && ((items[i].a >= 0 && crossed[items[i].a]) || (items[i].b >= 0 && crossed[items[i].b]))) part[i] = right_after_crossing;
-  int next = 0;
-  for (uint8_t group = crossing; group <= right_after_crossing; ++group)
-    for (size_t i = 0; i < count; ++i)
-      if (part[i] == group) order_[next++] = int(i);
+  order_parts(items, part);
   if (threads < 2) return;
 
   before_a_.resize(count);
@@ -98,6 +105,38 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
     for (int before : {before_a_[step], before_b_[step]})
       if (before >= 0 && owner_[before] != owner_[step]) awaited_[before] = 1;
   if (!progress_) progress_ = std::make_unique<Progress[]>(2);
+}
+
+// The order: part after part, each in the items' order but for partners. An item's partner is the
+// first one after it, not yet placed and not too far, with as many points and no moving body in
+// common; it comes right after it, and the two are solved side by side.
+void SweepSchedule::order_parts(const std::vector<SweepItem>& items, const std::vector<uint8_t>& part) {
+  const size_t count = items.size();
+  paired_.assign(count, 0);
+  std::vector<uint8_t> placed(count, 0);
+  std::vector<int> members;
+  int next = 0;
+  const uint8_t last_part = count == 0 ? 0 : *std::max_element(part.begin(), part.end());
+  for (uint8_t group = 0; group <= last_part; ++group) {
+    members.clear();
+    for (size_t i = 0; i < count; ++i)
+      if (part[i] == group) members.push_back(int(i));
+    for (size_t p = 0; p < members.size(); ++p) {
+      const int i = members[p];
+      if (placed[i]) continue;
+      placed[i] = 1;
+      order_[next++] = i;
+      if (items[i].size == 0) continue;
+      for (size_t q = p + 1; q < members.size() && q <= p + kPartnerReach; ++q) {
+        const int j = members[q];
+        if (placed[j] || items[j].size != items[i].size || share_a_body(items[i], items[j])) continue;
+        placed[j] = 1;
+        paired_[next - 1] = 1;
+        order_[next++] = j;
+        break;
+      }
+    }
+  }
 }
 
 void SweepSchedule::wait_for(int step, int thread, uint64_t epoch) const {

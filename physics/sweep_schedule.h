@@ -9,6 +9,9 @@
 // until the manifolds before it in the order that move one of its bodies are done, so every body
 // receives its impulses in exactly the sweep's order. The two sides touch different bodies, and the
 // right ones that wait for crossing ones come last: the threads hardly ever wait on each other.
+//
+// Within each part, a manifold is followed where it can be by one a little further on with as many
+// points that moves none of its bodies: the two are solved side by side (lanes.h).
 #pragma once
 #include "physics/math.h"
 #include "physics/thread_team.h"
@@ -20,10 +23,12 @@
 
 namespace impulse::physics {
 
-// One constraint of the sweep: its two bodies (-1 for one that does not move) and their positions.
+// One constraint of the sweep: its two bodies (-1 for one that does not move), their positions, and
+// its size (items of one size can be solved side by side; 0: never).
 struct SweepItem {
   int a = -1, b = -1;
   Vec3 position_a = Vec3::Zero(), position_b = Vec3::Zero();
+  int size = 0;
 };
 
 class SweepSchedule {
@@ -32,6 +37,8 @@ class SweepSchedule {
   // and gives each of the `body_count` bodies its slot.
   void plan(const std::vector<SweepItem>& items, int body_count, int threads);
   bool parallel() const { return lists_.size() > 1; }
+  // Whether a step is solved side by side with the next.
+  bool paired(int step) const { return paired_[step] != 0; }
   // The items in the sweeps' order; sweep() then names them by their place in it.
   const std::vector<int>& order() const { return order_; }
 
@@ -46,8 +53,9 @@ class SweepSchedule {
     epoch_ += uint64_t(count);
     return first;
   }
-  // `thread`'s share of a sweep: solve(step) for its steps, in order, each once the steps before it
-  // that move the same bodies are done (on one thread: every step). Threads beyond the plan's do nothing.
+  // `thread`'s share of a sweep: solve(step, 1) for its steps, in order, each once the steps before
+  // it that move the same bodies are done (on one thread: every step); solve(step, 2) for a step
+  // paired with the next. Threads beyond the plan's do nothing.
   template <class Solve>
   void sweep_share(int thread, uint64_t epoch, Solve&& solve) const;
   // f(step) or f(slot) for `thread`'s steps or bodies' slots, in any order.
@@ -78,6 +86,7 @@ class SweepSchedule {
   }
 
  private:
+  void order_parts(const std::vector<SweepItem>& items, const std::vector<uint8_t>& part);
   void wait_for(int step, int thread, uint64_t epoch) const;
 
   // How far each thread has come in the current sweep: epoch * 2^32 + steps done. Each on its own
@@ -93,6 +102,7 @@ class SweepSchedule {
   std::vector<uint8_t> owner_;            // the thread that solves it
   std::vector<uint32_t> place_;           // its position in that thread's list
   std::vector<uint8_t> awaited_;          // whether another thread waits for it
+  std::vector<uint8_t> paired_;           // whether it is solved side by side with the next
   std::vector<std::vector<int>> lists_;   // each thread's steps, in order
   std::vector<int> slot_of_body_, body_of_slot_;
   int slot_split_ = 0;                    // the second thread's slots start here
@@ -104,17 +114,21 @@ template <class Solve>
 void SweepSchedule::sweep_share(int thread, uint64_t epoch, Solve&& solve) const {
   if (!parallel()) {
     if (thread == 0)
-      for (int step = 0; step < int(order_.size()); ++step) solve(step);
+      for (int step = 0; step < int(order_.size()); step += 1 + paired_[step]) solve(step, 1 + paired_[step]);
     return;
   }
   if (thread >= int(lists_.size())) return;
   const std::vector<int>& list = lists_[thread];
   for (size_t place = 0; place < list.size(); ++place) {
     const int step = list[place];
-    wait_for(before_a_[step], thread, epoch);
-    wait_for(before_b_[step], thread, epoch);
-    solve(step);
-    if (awaited_[step]) progress_[thread].value.store((epoch << kEpochShift) + place + 1, std::memory_order_release);
+    const int width = 1 + paired_[step];  // a pair is one thread's, and next in its list
+    for (int k = 0; k < width; ++k) {
+      wait_for(before_a_[step + k], thread, epoch);
+      wait_for(before_b_[step + k], thread, epoch);
+    }
+    solve(step, width);
+    place += width - 1;
+    if (awaited_[step] || awaited_[step + width - 1]) progress_[thread].value.store((epoch << kEpochShift) + place + 1, std::memory_order_release);
   }
 }
 
