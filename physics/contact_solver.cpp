@@ -294,6 +294,7 @@ void ContactSolver::fill_lanes(int step, const ManifoldConstraint& m) {
   }
   block.a[l] = m.a;
   block.b[l] = m.b;
+  block.can_bounce = block.can_bounce || m.restitution > 0;
   set_lane(block.normal, l, m.normal);
   set_lane(block.tangent1, l, m.tangent1);
   set_lane(block.tangent2, l, m.tangent2);
@@ -392,21 +393,22 @@ bool ContactSolver::solve_manifolds(int index, int width, std::vector<BodyState>
   bool bounced = false;
   for (int l = 0; l < width; ++l) {
     ManifoldConstraint& m = manifolds_[index + l];
-    if (use_bias && bounce(index + l, states[m.a], states[m.b], 1 / inv_h)) bounced = true;
+    if (use_bias && block.can_bounce && bounce(index + l, states[m.a], states[m.b], 1 / inv_h)) bounced = true;
     else solved[l] = -1;
   }
   if (!any(solved)) return bounced;
-  switch ((block.points - 1) * 2 + backwards_) {
-    case 0: solve_lanes<1, false>(block, solved, states, inv_h, use_bias); break;
-    case 1: solve_lanes<1, true>(block, solved, states, inv_h, use_bias); break;
-    case 2: solve_lanes<2, false>(block, solved, states, inv_h, use_bias); break;
-    case 3: solve_lanes<2, true>(block, solved, states, inv_h, use_bias); break;
-    case 4: solve_lanes<3, false>(block, solved, states, inv_h, use_bias); break;
-    case 5: solve_lanes<3, true>(block, solved, states, inv_h, use_bias); break;
-    case 6: solve_lanes<4, false>(block, solved, states, inv_h, use_bias); break;
-    case 7: solve_lanes<4, true>(block, solved, states, inv_h, use_bias); break;
-    default: break;
-  }
+  // The points, the direction and the pass known to the compiler: the rows stay in registers.
+  using Solve = void (ContactSolver::*)(ManifoldLanes&, Mask2, std::vector<BodyState>&, Real);
+  static constexpr Solve kSolves[4][2][2] = {
+      {{&ContactSolver::solve_lanes<1, false, false>, &ContactSolver::solve_lanes<1, false, true>},
+       {&ContactSolver::solve_lanes<1, true, false>, &ContactSolver::solve_lanes<1, true, true>}},
+      {{&ContactSolver::solve_lanes<2, false, false>, &ContactSolver::solve_lanes<2, false, true>},
+       {&ContactSolver::solve_lanes<2, true, false>, &ContactSolver::solve_lanes<2, true, true>}},
+      {{&ContactSolver::solve_lanes<3, false, false>, &ContactSolver::solve_lanes<3, false, true>},
+       {&ContactSolver::solve_lanes<3, true, false>, &ContactSolver::solve_lanes<3, true, true>}},
+      {{&ContactSolver::solve_lanes<4, false, false>, &ContactSolver::solve_lanes<4, false, true>},
+       {&ContactSolver::solve_lanes<4, true, false>, &ContactSolver::solve_lanes<4, true, true>}}};
+  (this->*kSolves[block.points - 1][backwards_][use_bias])(block, solved, states, inv_h);
   return bounced;
 }
 
@@ -424,8 +426,8 @@ bool ContactSolver::solve_manifolds(int index, int width, std::vector<BodyState>
 // Friction: Coulomb friction at the points' centroid, within the disc of radius mu times their
 // total normal impulse, and a twist about the normal within mu times that times the points'
 // spread; static friction also pulls back the drift from where the pair first touched.
-template <int N, bool Backwards>
-void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<BodyState>& states, Real inv_h, bool use_bias) {
+template <int N, bool Backwards, bool UseBias>
+void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<BodyState>& states, Real inv_h) {
   BodyState* sa[2] = {&states[block.a[0]], &states[block.a[1]]};
   BodyState* sb[2] = {&states[block.b[0]], &states[block.b[1]]};
   PointLanes* points = &lane_points_[block.first_point];
@@ -459,7 +461,7 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<
     // be (mass 0): the next solve clamps it anyway, and slowing a body before it touches would
     // lose the speed it hits with.
     const Mask2 apart = separation > 0;
-    if (use_bias) {
+    if constexpr (UseBias) {
       const Real2 soft_bias = block.bias_rate * separation;
       const Real2 bias = select(apart, separation * inv_h, select(soft_bias < max_push, max_push, soft_bias));
       mass[i] = select(apart, p.normal_mass, p.normal_mass * block.mass_scale);
@@ -499,7 +501,7 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<
     Real2 v1 = dot(dv, block.tangent1) + dot(wa, block.ra_cross_t1) - dot(wb, block.rb_cross_t1);
     Real2 v2 = dot(dv, block.tangent2) + dot(wa, block.ra_cross_t2) - dot(wb, block.rb_cross_t2);
     Real2 mass_scale = splat(1), leak = splat(0);
-    if (use_bias) {
+    if constexpr (UseBias) {
       // Without the pull back to the anchor, tiny slips add up and stacks creep.
       auto turned = [&](const Q4& dq, const V3& centre, Real2 inv_mass) {  // a still body has not turned
         const Mask2 moves = inv_mass > 0;

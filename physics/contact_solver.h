@@ -107,6 +107,7 @@ struct alignas(64) ManifoldLanes {
   int a[2], b[2];                  // slots
   int points = 0;                  // each manifold's
   int first_point = 0;             // in lane_points_
+  bool can_bounce = false;         // either has restitution
   V3 normal, tangent1, tangent2;
   Real2 bias_rate, mass_scale, impulse_scale, friction;
   Real2 turns_a, turns_b;          // 1 where the body's turning moves the points along the normal
@@ -175,8 +176,8 @@ class ContactSolver {
   bool solve_manifolds(int index, int width, std::vector<BodyState>& states, Real inv_h, bool use_bias);
   void fill_lanes(int step, const ManifoldConstraint& m);
   void warm_start_lanes(const ManifoldLanes& block, std::vector<BodyState>& states) const;
-  template <int N, bool Backwards>
-  void solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<BodyState>& states, Real inv_h, bool use_bias);
+  template <int N, bool Backwards, bool UseBias>
+  void solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<BodyState>& states, Real inv_h);
   void copy_back(int step);
   void shift_bounce(int index, std::vector<BodyState>& states);
   void add_to_totals(int index);
