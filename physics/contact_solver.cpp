@@ -42,10 +42,11 @@ bool clamp_to_disc(Real& j1, Real& j2, Real limit, Real slip = INFINITY) {
   return length_squared > slip * slip;
 }
 
-// One contact point's constraint, without its warm start.
+// One contact point's constraint, without its warm start. What the points of a manifold share (one
+// pair, one normal) is taken from its first point's, once built.
 ContactConstraint make_constraint(const Contact& contact, const std::vector<Body>& bodies, const std::vector<BodyState>& states,
                                   const std::vector<int>& slots, const ContactSolverSettings& settings, const Vec3& gravity,
-                                  const Softness& contact_soft, const Softness& static_soft) {
+                                  const Softness& contact_soft, const Softness& static_soft, const ContactConstraint* first) {
   const Body& body_a = bodies[contact.body_a];
   const Body& body_b = bodies[contact.body_b];
   ContactConstraint c;
@@ -55,7 +56,12 @@ ContactConstraint make_constraint(const Contact& contact, const std::vector<Body
   const BodyState& sa = states[c.a];
   const BodyState& sb = states[c.b];
   c.normal = contact.normal;
-  tangent_basis(c.normal, c.tangent1, c.tangent2);
+  if (first) {
+    c.tangent1 = first->tangent1;
+    c.tangent2 = first->tangent2;
+  } else {
+    tangent_basis(c.normal, c.tangent1, c.tangent2);
+  }
   c.anchor_a = contact.point - body_a.position;
   c.anchor_b = contact.point - body_b.position;
   c.adjusted_separation = contact.separation - (c.anchor_a - c.anchor_b).dot(c.normal);
@@ -64,6 +70,13 @@ ContactConstraint make_constraint(const Contact& contact, const std::vector<Body
   c.angular_a = sa.inv_inertia * c.ra_cross_n;
   c.angular_b = sb.inv_inertia * c.rb_cross_n;
   c.normal_mass = safe_inverse(sa.inv_mass + sb.inv_mass + c.ra_cross_n.dot(c.angular_a) + c.rb_cross_n.dot(c.angular_b));
+  if (first) {
+    c.friction = first->friction;
+    c.restitution = first->restitution;
+    c.softness = first->softness;
+    c.normal_acceleration = first->normal_acceleration;
+    return c;
+  }
   c.friction = settings.friction ? mix_friction(body_a.material.friction, body_b.material.friction) : 0;
   c.restitution = mix_restitution(body_a.material.restitution, body_b.material.restitution);
   c.softness = (sa.inv_mass == 0 || sb.inv_mass == 0) ? static_soft : contact_soft;
@@ -112,8 +125,8 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   // Last step's constraints, if it stored its impulses, are the warm start: found by pair, then
   // by feature. Each thread reads what it built last step.
   if (impulses_stored_) {
-    std::swap(previous_constraints_, constraints_);
-    std::swap(previous_manifolds_, manifolds_);
+    std::swap(previous_warm_points_, warm_points_);
+    std::swap(previous_warm_manifolds_, warm_manifolds_);
     std::swap(previous_pairs_, pairs_);
   } else {
     previous_pairs_.clear();
@@ -163,16 +176,17 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
       const auto [same_pair, other_pair] = previous_range_[order[step]];
       for (int i = 0; i < m.count; ++i) {
         ContactConstraint& c = constraints_[m.first + i];
-        c = make_constraint(contacts[first + i], bodies, states, slots, settings, gravity, contact_soft, static_soft);
+        c = make_constraint(contacts[first + i], bodies, states, slots, settings, gravity, contact_soft, static_soft,
+                            i > 0 ? &constraints_[m.first] : nullptr);
         for (int previous = same_pair; previous != other_pair; ++previous) {
-          const ManifoldConstraint& pm = previous_manifolds_[previous_pairs_[previous].manifold];
+          const ManifoldWarm& pm = previous_warm_manifolds_[previous_pairs_[previous].manifold];
           for (int j = 0; j < pm.count; ++j)
-            if (previous_constraints_[pm.first + j].feature == c.feature) c.normal_impulse = warm_scale * previous_constraints_[pm.first + j].normal_impulse;
+            if (previous_warm_points_[pm.first + j].feature == c.feature) c.normal_impulse = warm_scale * previous_warm_points_[pm.first + j].normal_impulse;
         }
       }
       prepare_manifold(m, bodies[contacts[first].body_a], bodies[contacts[first].body_b], states);
       if (same_pair != other_pair) {
-        warm_start_friction(m, previous_manifolds_[previous_pairs_[other_pair - 1].manifold], bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
+        warm_start_friction(m, previous_warm_manifolds_[previous_pairs_[other_pair - 1].manifold], bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
         m.tangent_impulse1 *= warm_scale;
         m.tangent_impulse2 *= warm_scale;
         m.twist_impulse *= warm_scale;
@@ -220,12 +234,14 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, const Body& body_a, 
   m.tangent_mass1 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent1));
   m.tangent_mass2 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent2));
   // How an impulse at point j changes the normal velocity at point i (eq. 13's denominator,
-  // generalised: its diagonal is the inverse of each point's normal mass).
+  // generalised: its diagonal is the inverse of each point's normal mass). Symmetric, and the
+  // points share the normal.
+  const Real linear = (sa.inv_mass + sb.inv_mass) * first.normal.dot(first.normal);
   for (int i = 0; i < m.count; ++i)
-    for (int j = 0; j < m.count; ++j) {
+    for (int j = i; j < m.count; ++j) {
       const ContactConstraint& ci = constraints_[m.first + i];
       const ContactConstraint& cj = constraints_[m.first + j];
-      m.coupling[i][j] = (sa.inv_mass + sb.inv_mass) * ci.normal.dot(cj.normal) + ci.ra_cross_n.dot(cj.angular_a) + ci.rb_cross_n.dot(cj.angular_b);
+      m.coupling[i][j] = m.coupling[j][i] = linear + ci.ra_cross_n.dot(cj.angular_a) + ci.rb_cross_n.dot(cj.angular_b);
     }
   m.twist_mass = safe_inverse(first.normal.dot((sa.inv_inertia + sb.inv_inertia) * first.normal));
   m.ra_cross_t1 = m.centre_a.cross(first.tangent1);
@@ -248,7 +264,7 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, const Body& body_a, 
 }
 
 // Last step's friction impulses, and its anchor unless the pair slipped.
-void ContactSolver::warm_start_friction(ManifoldConstraint& m, const ManifoldConstraint& previous, const Body& body_a, const Body& body_b) const {
+void ContactSolver::warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous, const Body& body_a, const Body& body_b) const {
   m.tangent_impulse1 = previous.tangent_impulse1;
   m.tangent_impulse2 = previous.tangent_impulse2;
   m.twist_impulse = previous.twist_impulse;
@@ -693,9 +709,13 @@ void ContactSolver::store_impulses() {
   impulses_stored_ = true;
   stored_h_ = h_;
   loads_.resize(manifolds_.size());
+  warm_manifolds_.resize(manifolds_.size());
+  warm_points_.resize(constraints_.size());
   schedule_.for_each_step(*team_, [&](int index) {
     copy_back(index);
     const ManifoldConstraint& m = manifolds_[index];
+    warm_manifolds_[index] = {m.first, m.count, m.slipped, m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse, m.local_anchor_a, m.local_anchor_b};
+    for (int i = 0; i < m.count; ++i) warm_points_[m.first + i] = {constraints_[m.first + i].feature, constraints_[m.first + i].normal_impulse};
     ManifoldLoad& load = loads_[index];
     load = {m.a, m.b, 0, 0, constraints_[m.first].normal};
     for (int i = 0; i < m.count; ++i) {

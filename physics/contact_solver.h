@@ -169,7 +169,8 @@ class ContactSolver {
  private:
   void find_previous_pairs();
   void prepare_manifold(ManifoldConstraint& m, const Body& body_a, const Body& body_b, const std::vector<BodyState>& states) const;
-  void warm_start_friction(ManifoldConstraint& m, const ManifoldConstraint& previous, const Body& body_a, const Body& body_b) const;
+  struct ManifoldWarm;
+  void warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous, const Body& body_a, const Body& body_b) const;
   // The sweeps' work on manifold `index`, or on it and the next side by side (width 2; lanes.h).
   void warm_start_manifolds(int index, int width, std::vector<BodyState>& states) const;
   // Returns whether any bounced (restitution, only with use_bias).
@@ -199,8 +200,21 @@ class ContactSolver {
   // last step's constraints, manifolds and pairs; and where each manifold's pair is among those.
   struct PairPlace { uint64_t key; int manifold; };
   std::vector<PairPlace> pairs_;
-  std::vector<ContactConstraint> previous_constraints_;
-  std::vector<ManifoldConstraint> previous_manifolds_;
+  // What the warm start needs of a step, small and apart from the constraints (the lookups then
+  // read a line or two): per point, its feature and impulse; per manifold, its points, friction
+  // and anchor. This step's (written by store_impulses()) and last step's.
+  struct PointWarm {
+    uint32_t feature = 0;
+    Real normal_impulse = 0;
+  };
+  struct ManifoldWarm {
+    int first = 0, count = 0;
+    bool slipped = false;
+    Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;
+    Vec3 local_anchor_a = Vec3::Zero(), local_anchor_b = Vec3::Zero();
+  };
+  std::vector<PointWarm> warm_points_, previous_warm_points_;
+  std::vector<ManifoldWarm> warm_manifolds_, previous_warm_manifolds_;
   std::vector<PairPlace> previous_pairs_;
   std::vector<std::pair<int, int>> previous_range_;
   bool impulses_stored_ = false;  // store_impulses() since the last prepare()
