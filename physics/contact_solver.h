@@ -2,6 +2,10 @@
 // clamped to push only (eq. 13 as corrected) with a soft position correction; per manifold (all
 // the points between one pair of bodies), Coulomb friction on two tangents and a twist at the
 // points' centroid, and restitution answered in the sub-step in which the surfaces meet.
+//
+// The constraints below are built per point and per manifold, and kept for the records, the
+// bounces, the warm start and the teaching methods; the sweeps work on a packed copy, two
+// manifolds side by side (ManifoldLanes, contact_lanes.cpp).
 #pragma once
 #include "physics/body.h"
 #include "physics/contact.h"
@@ -39,7 +43,7 @@ Real mix_restitution(Real a, Real b);
 Real mix_friction(Real a, Real b);
 
 // One contact point.
-struct alignas(64) ContactConstraint {  // a cache line of its own at each end: threads solve neighbours
+struct alignas(64) ContactConstraint {  // a cache line of its own at each end: threads build neighbours
   int a = -1, b = -1;
   uint32_t feature = 0;                // the contact's, to find it again next step
   Vec3 normal, tangent1, tangent2;
@@ -66,7 +70,7 @@ inline Real current_separation(const ContactConstraint& c, const BodyState& sa, 
 // The points between one pair of bodies, and their shared friction.
 struct alignas(64) ManifoldConstraint {
   int a = -1, b = -1;
-  int first = 0, count = 0;            // its points in the constraint (and row) list
+  int first = 0, count = 0;            // its points in the constraint list
   bool turns_a = true, turns_b = true; // whether the body's turning moves its points along the normal
   bool slipped = false;
   bool bounced = false;                // restitution applied this step
