@@ -31,21 +31,16 @@ void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint
     boxes_[i] = body_aabb(bodies[i], base_margin / 2 + motion_bounds_[i]);
   }
   broad_phase_.find_pairs(boxes_, awake, pairs_, &team);
-  auto collide_range = [&](size_t begin, size_t end, int thread, std::vector<Contact>& contacts) {
+  auto collide_range = [&](size_t begin, size_t end, std::vector<Contact>& contacts) {
     for (size_t k = begin; k < end; ++k) {
       const BodyPair& pair = pairs_[k];
-      const Body& a = bodies[pair.a];
-      const Body& b = bodies[pair.b];
       const Real margin = base_margin + motion_bounds_[pair.a] + motion_bounds_[pair.b];
-      if (a.shape.type == ShapeType::box && b.shape.type == ShapeType::box) cache_.collide_boxes(a, pair.a, b, pair.b, margin, thread, contacts);
-      else collide(a, pair.a, b, pair.b, margin, contacts);
+      collide(bodies[pair.a], pair.a, bodies[pair.b], pair.b, margin, contacts);
     }
   };
   const size_t threads = std::min(size_t(team.size()), pairs_.size() / kMinPairsPerThread);
-  cache_.begin(int(std::max(threads, size_t(1))));
   if (threads < 2) {
-    collide_range(0, pairs_.size(), 0, out);
-    cache_.end();
+    collide_range(0, pairs_.size(), out);
     return;
   }
   // Consecutive runs of pairs, one per thread, joined in order afterwards.
@@ -54,9 +49,8 @@ void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint
     if (size_t(thread) >= threads) return;
     std::vector<Contact>& contacts = thread == 0 ? out : shares_[thread - 1];
     contacts.clear();
-    collide_range(pairs_.size() * thread / threads, pairs_.size() * (thread + 1) / threads, thread, contacts);
+    collide_range(pairs_.size() * thread / threads, pairs_.size() * (thread + 1) / threads, contacts);
   });
-  cache_.end();
   for (const std::vector<Contact>& share : shares_) out.insert(out.end(), share.begin(), share.end());
 }
 

@@ -4,7 +4,6 @@
 #include "physics/body.h"
 #include "physics/broadphase.h"
 #include "physics/contact.h"
-#include "physics/contact_cache.h"
 #include "physics/thread_team.h"
 
 #include <cstdint>
@@ -28,7 +27,6 @@ class ContactFinder {
   std::vector<Real> motion_bounds_;
   std::vector<BodyPair> pairs_;
   std::vector<std::vector<Contact>> shares_;  // each helper thread's contacts, in pair order
-  ContactCache cache_;
 };
 
 // Farthest a body's surface can travel in dt: bounds the speculative margin.
