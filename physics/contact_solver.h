@@ -142,6 +142,7 @@ class ContactSolver {
   const std::vector<int>& slots() const { return schedule_.slots(); }
   const std::vector<int>& body_of_slot() const { return schedule_.bodies(); }
   // Builds the constraints of the planned contacts, warm started from the last step's impulses.
+  // The last of `states` must be a still one (the world's): a block's empty lane reads it.
   void prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                const std::vector<BodyState>& states, const ContactSolverSettings& settings,
                const Vec3& gravity, Real h);
