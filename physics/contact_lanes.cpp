@@ -5,9 +5,9 @@
 
 namespace impulse::physics {
 
-// Copies a prepared manifold into its lane of its block (and empties the second lane of a block
-// with one manifold).
-void ContactSolver::fill_lanes(int step, const ManifoldConstraint& m) {
+// The block of a step's manifold, its lane given the manifold's bodies (and emptied first, with
+// its second lane left still, by the block's first manifold).
+ManifoldLanes& ContactSolver::begin_lanes(int step, const ManifoldConstraint& m) {
   const auto [index, l] = lane_of_step_[step];
   ManifoldLanes& block = lanes_[index];
   if (l == 0) {
@@ -20,34 +20,18 @@ void ContactSolver::fill_lanes(int step, const ManifoldConstraint& m) {
   }
   block.a[l] = m.a;
   block.b[l] = m.b;
-  block.can_bounce = block.can_bounce || m.restitution > 0;
+  return block;
+}
+
+// The rest of a prepared manifold's lane (prepare_manifold() wrote its friction rows): the shared
+// normal and tangents, the warm start, and the points.
+void ContactSolver::fill_lanes(int step, const ManifoldConstraint& m) {
+  const auto [index, l] = lane_of_step_[step];
+  ManifoldLanes& block = lanes_[index];
   set_lane(block.normal, l, m.normal);
   set_lane(block.tangent1, l, m.tangent1);
   set_lane(block.tangent2, l, m.tangent2);
-  block.bias_rate[l] = m.softness.bias_rate;
-  block.mass_scale[l] = m.softness.mass_scale;
-  block.impulse_scale[l] = m.softness.impulse_scale;
   block.friction[l] = m.friction;
-  block.turns_a[l] = m.turns_a;
-  block.turns_b[l] = m.turns_b;
-  for (int i = 0; i < m.count; ++i)
-    for (int j = 0; j < m.count; ++j) block.coupling[i][j][l] = m.coupling[i][j];
-  block.tangent_mass1[l] = m.tangent_mass1;
-  block.tangent_mass2[l] = m.tangent_mass2;
-  block.twist_mass[l] = m.twist_mass;
-  block.twist_radius[l] = m.twist_radius;
-  set_lane(block.ra_cross_t1, l, m.ra_cross_t1);
-  set_lane(block.ra_cross_t2, l, m.ra_cross_t2);
-  set_lane(block.rb_cross_t1, l, m.rb_cross_t1);
-  set_lane(block.rb_cross_t2, l, m.rb_cross_t2);
-  set_lane(block.turn_a1, l, m.turn_a1);
-  set_lane(block.turn_a2, l, m.turn_a2);
-  set_lane(block.turn_b1, l, m.turn_b1);
-  set_lane(block.turn_b2, l, m.turn_b2);
-  set_lane(block.twist_a, l, m.twist_a);
-  set_lane(block.twist_b, l, m.twist_b);
-  set_lane(block.centre_a, l, m.centre_a);
-  set_lane(block.centre_b, l, m.centre_b);
   set_lane(block.drift, l, m.drift);
   block.tangent_impulse1[l] = m.tangent_impulse1;
   block.tangent_impulse2[l] = m.tangent_impulse2;

@@ -184,7 +184,8 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
             if (previous_warm_points_[pm.first + j].feature == c.feature) c.normal_impulse = warm_scale * previous_warm_points_[pm.first + j].normal_impulse;
         }
       }
-      prepare_manifold(m, bodies[contacts[first].body_a], bodies[contacts[first].body_b], states);
+      ManifoldLanes& block = begin_lanes(int(step), m);
+      prepare_manifold(m, block, lane_of_step_[step].lane, bodies[contacts[first].body_a], bodies[contacts[first].body_b], states);
       if (same_pair != other_pair) {
         warm_start_friction(m, previous_warm_manifolds_[previous_pairs_[other_pair - 1].manifold], bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
         m.tangent_impulse1 *= warm_scale;
@@ -215,24 +216,30 @@ void ContactSolver::find_previous_pairs() {
   }
 }
 
-// The friction rows of a manifold whose points are built.
-void ContactSolver::prepare_manifold(ManifoldConstraint& m, const Body& body_a, const Body& body_b, const std::vector<BodyState>& states) const {
+// The shared parts of a manifold whose points are built, and the rows its lane `l` of `block` is
+// solved with: the points' coupling, and friction at their centroid.
+void ContactSolver::prepare_manifold(ManifoldConstraint& m, ManifoldLanes& block, int l, const Body& body_a, const Body& body_b,
+                                     const std::vector<BodyState>& states) const {
   const BodyState& sa = states[m.a];
   const BodyState& sb = states[m.b];
   const ContactConstraint& first = constraints_[m.first];
   m.normal = first.normal;
   m.tangent1 = first.tangent1;
   m.tangent2 = first.tangent2;
-  m.softness = first.softness;
   m.friction = first.friction;
   m.restitution = first.restitution;
+  block.can_bounce = block.can_bounce || m.restitution > 0;
+  block.bias_rate[l] = first.softness.bias_rate;
+  block.mass_scale[l] = first.softness.mass_scale;
+  block.impulse_scale[l] = first.softness.impulse_scale;
   Vec3 centre = Vec3::Zero();
   for (int i = 0; i < m.count; ++i) centre += constraints_[m.first + i].anchor_a;
   centre /= m.count;  // relative to A
-  m.centre_a = centre;
-  m.centre_b = centre + (first.anchor_b - first.anchor_a);
-  m.tangent_mass1 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent1));
-  m.tangent_mass2 = safe_inverse(inverse_effective_mass(sa, sb, m.centre_a, m.centre_b, first.tangent2));
+  const Vec3 centre_a = centre, centre_b = centre + (first.anchor_b - first.anchor_a);
+  set_lane(block.centre_a, l, centre_a);
+  set_lane(block.centre_b, l, centre_b);
+  block.tangent_mass1[l] = safe_inverse(inverse_effective_mass(sa, sb, centre_a, centre_b, first.tangent1));
+  block.tangent_mass2[l] = safe_inverse(inverse_effective_mass(sa, sb, centre_a, centre_b, first.tangent2));
   // How an impulse at point j changes the normal velocity at point i (eq. 13's denominator,
   // generalised: its diagonal is the inverse of each point's normal mass). Symmetric, and the
   // points share the normal.
@@ -241,26 +248,29 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, const Body& body_a, 
     for (int j = i; j < m.count; ++j) {
       const ContactConstraint& ci = constraints_[m.first + i];
       const ContactConstraint& cj = constraints_[m.first + j];
-      m.coupling[i][j] = m.coupling[j][i] = linear + ci.ra_cross_n.dot(cj.angular_a) + ci.rb_cross_n.dot(cj.angular_b);
+      block.coupling[i][j][l] = block.coupling[j][i][l] = linear + ci.ra_cross_n.dot(cj.angular_a) + ci.rb_cross_n.dot(cj.angular_b);
     }
-  m.twist_mass = safe_inverse(first.normal.dot((sa.inv_inertia + sb.inv_inertia) * first.normal));
-  m.ra_cross_t1 = m.centre_a.cross(first.tangent1);
-  m.ra_cross_t2 = m.centre_a.cross(first.tangent2);
-  m.rb_cross_t1 = m.centre_b.cross(first.tangent1);
-  m.rb_cross_t2 = m.centre_b.cross(first.tangent2);
-  m.turn_a1 = sa.inv_inertia * m.ra_cross_t1;
-  m.turn_a2 = sa.inv_inertia * m.ra_cross_t2;
-  m.turn_b1 = sb.inv_inertia * m.rb_cross_t1;
-  m.turn_b2 = sb.inv_inertia * m.rb_cross_t2;
-  m.twist_a = sa.inv_inertia * first.normal;
-  m.twist_b = sb.inv_inertia * first.normal;
-  m.twist_radius = 0;
-  for (int i = 0; i < m.count; ++i) m.twist_radius += (constraints_[m.first + i].anchor_a - centre).norm() / m.count;
-  m.local_anchor_a = body_a.orientation.conjugate() * m.centre_a;
-  m.local_anchor_b = body_b.orientation.conjugate() * m.centre_b;
+  block.twist_mass[l] = safe_inverse(first.normal.dot((sa.inv_inertia + sb.inv_inertia) * first.normal));
+  const Vec3 ra_cross_t1 = centre_a.cross(first.tangent1), ra_cross_t2 = centre_a.cross(first.tangent2);
+  const Vec3 rb_cross_t1 = centre_b.cross(first.tangent1), rb_cross_t2 = centre_b.cross(first.tangent2);
+  set_lane(block.ra_cross_t1, l, ra_cross_t1);
+  set_lane(block.ra_cross_t2, l, ra_cross_t2);
+  set_lane(block.rb_cross_t1, l, rb_cross_t1);
+  set_lane(block.rb_cross_t2, l, rb_cross_t2);
+  set_lane(block.turn_a1, l, sa.inv_inertia * ra_cross_t1);
+  set_lane(block.turn_a2, l, sa.inv_inertia * ra_cross_t2);
+  set_lane(block.turn_b1, l, sb.inv_inertia * rb_cross_t1);
+  set_lane(block.turn_b2, l, sb.inv_inertia * rb_cross_t2);
+  set_lane(block.twist_a, l, sa.inv_inertia * first.normal);
+  set_lane(block.twist_b, l, sb.inv_inertia * first.normal);
+  Real twist_radius = 0;
+  for (int i = 0; i < m.count; ++i) twist_radius += (constraints_[m.first + i].anchor_a - centre).norm() / m.count;
+  block.twist_radius[l] = twist_radius;
+  m.local_anchor_a = body_a.orientation.conjugate() * centre_a;
+  m.local_anchor_b = body_b.orientation.conjugate() * centre_b;
   // A sphere's surface stays where it is as it turns, and a still body does not turn.
-  m.turns_a = sa.inv_mass > 0 && body_a.shape.type != ShapeType::sphere;
-  m.turns_b = sb.inv_mass > 0 && body_b.shape.type != ShapeType::sphere;
+  block.turns_a[l] = sa.inv_mass > 0 && body_a.shape.type != ShapeType::sphere;
+  block.turns_b[l] = sb.inv_mass > 0 && body_b.shape.type != ShapeType::sphere;
 }
 
 // Last step's friction impulses, and its anchor unless the pair slipped.

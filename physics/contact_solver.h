@@ -67,26 +67,17 @@ inline Real current_separation(const ContactConstraint& c, const BodyState& sa, 
   return moved.dot(c.normal) + c.adjusted_separation;
 }
 
-// The points between one pair of bodies, and their shared friction.
+// The points between one pair of bodies, and their shared friction: what the records, the bounces
+// and the warm start read. The rows the sweeps solve are built straight into its lane
+// (ManifoldLanes).
 struct alignas(64) ManifoldConstraint {
   int a = -1, b = -1;
   int first = 0, count = 0;            // its points in the constraint list
-  bool turns_a = true, turns_b = true; // whether the body's turning moves its points along the normal
   bool slipped = false;
   bool bounced = false;                // restitution applied this step
   // Its points', which share them (one pair, one normal).
-  Vec3 normal, tangent1, tangent2;
-  Softness softness;
+  Vec3 normal = Vec3::Zero(), tangent1 = Vec3::Zero(), tangent2 = Vec3::Zero();
   Real friction = 0, restitution = 0;
-  Vec3 centre_a = Vec3::Zero(), centre_b = Vec3::Zero();  // the points' centroid relative to each centre
-  Real coupling[4][4] = {};            // d(normal velocity at i) / d(impulse at j), for the points
-  Real tangent_mass1 = 0, tangent_mass2 = 0, twist_mass = 0;
-  // The friction rows' angular parts, fixed for the step: r x t at the centroid, and how an
-  // impulse along t1, t2 or a twist about n turns each body (I^-1 (r x t), I^-1 n).
-  Vec3 ra_cross_t1 = Vec3::Zero(), ra_cross_t2 = Vec3::Zero(), rb_cross_t1 = Vec3::Zero(), rb_cross_t2 = Vec3::Zero();
-  Vec3 turn_a1 = Vec3::Zero(), turn_a2 = Vec3::Zero(), turn_b1 = Vec3::Zero(), turn_b2 = Vec3::Zero();
-  Vec3 twist_a = Vec3::Zero(), twist_b = Vec3::Zero();
-  Real twist_radius = 0;               // mean distance of the points from the centroid
   Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;  // this sub-step's
   // Static friction's anchor: where the pair first touched, in each body's frame, and how far A
   // has slid from it over B at step start. Friction pulls that drift back until it slips.
@@ -115,11 +106,15 @@ struct alignas(64) ManifoldLanes {
   V3 normal, tangent1, tangent2;
   Real2 bias_rate, mass_scale, impulse_scale, friction;
   Real2 turns_a, turns_b;          // 1 where the body's turning moves the points along the normal
-  Real2 coupling[4][4];
-  Real2 tangent_mass1, tangent_mass2, twist_mass, twist_radius;
+  Real2 coupling[4][4];            // d(normal velocity at i) / d(impulse at j), for the points
+  Real2 tangent_mass1, tangent_mass2, twist_mass;
+  Real2 twist_radius;              // mean distance of the points from their centroid
+  // The friction rows' angular parts, fixed for the step: r x t at the points' centroid, and how
+  // an impulse along t1, t2 or a twist about n turns each body (I^-1 (r x t), I^-1 n).
   V3 ra_cross_t1, ra_cross_t2, rb_cross_t1, rb_cross_t2;
   V3 turn_a1, turn_a2, turn_b1, turn_b2, twist_a, twist_b;
-  V3 centre_a, centre_b, drift;
+  V3 centre_a, centre_b;           // the points' centroid relative to each body's centre
+  V3 drift;
   Real2 tangent_impulse1, tangent_impulse2, twist_impulse;
   Real2 total_tangent_impulse1, total_tangent_impulse2;
   Mask2 slipped;
@@ -173,7 +168,9 @@ class ContactSolver {
 
  private:
   void find_previous_pairs();
-  void prepare_manifold(ManifoldConstraint& m, const Body& body_a, const Body& body_b, const std::vector<BodyState>& states) const;
+  ManifoldLanes& begin_lanes(int step, const ManifoldConstraint& m);
+  void prepare_manifold(ManifoldConstraint& m, ManifoldLanes& block, int lane, const Body& body_a, const Body& body_b,
+                        const std::vector<BodyState>& states) const;
   struct ManifoldWarm;
   void warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous, const Body& body_a, const Body& body_b) const;
   // The sweeps' work on manifold `index`, or on it and the next side by side (width 2; lanes.h).
