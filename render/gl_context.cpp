@@ -4,9 +4,12 @@
 
 #include <stdexcept>
 
+#include "render/shader_cache.h"
+
 namespace impulse::render {
 
 GlContext::GlContext() : default_buffer_(kBufferSize * kBufferSize, 0u) {
+  separate_shader_cache_by_vector_width();  // before llvmpipe opens its cache
   const int attributes[] = {
       OSMESA_FORMAT,                OSMESA_RGBA,
       OSMESA_DEPTH_BITS,            24,

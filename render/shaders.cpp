@@ -165,8 +165,6 @@ uniform vec3 u_camera_position;
 out vec3 v_world;
 flat out vec3 v_centre;
 flat out float v_radius;
-// Three vectors, not a flat mat3: a flat matrix output corrupts llvmpipe's heap (Mesa 22.3) when
-// LP_NATIVE_VECTOR_WIDTH=128, as the golden images run it.
 flat out vec3 v_to_local_0;
 flat out vec3 v_to_local_1;
 flat out vec3 v_to_local_2;
