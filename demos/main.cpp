@@ -14,10 +14,17 @@
 #include <unistd.h>
 #include <vector>
 
+#include "render/part_file.h"
+
 namespace fs = std::filesystem;
 using namespace impulse;
 
 namespace {
+
+// Exit codes, as README.md lists them. An interrupted run ends by its signal (130, 143 in a shell).
+constexpr int kExitBadInput = 1;  // the scene file or the command line is wrong; nothing was written
+constexpr int kExitOutput = 3;    // the output cannot be written; nothing was replaced, no temporary left
+constexpr int kExitFailure = 4;   // anything else went wrong (the renderer, the encoder)
 
 // What the command line changes in every scene it renders.
 struct VideoOverrides {
@@ -45,6 +52,16 @@ struct VideoOverrides {
     options.renderer.spheres = spheres == "tessellated" ? render::SphereMethod::tessellated : render::SphereMethod::impostor;
   }
 };
+
+// Says what went wrong and returns the exit code for it.
+int report(const std::exception& error) {
+  std::fprintf(stderr, "impulse: %s\n", error.what());
+  if (dynamic_cast<const render::OutputError*>(&error)) return kExitOutput;
+  if (dynamic_cast<const demos::SceneError*>(&error) || dynamic_cast<const std::invalid_argument*>(&error)) {
+    return kExitBadInput;
+  }
+  return kExitFailure;
+}
 
 std::string default_video_path(const std::string& scene_path, const std::string& out_directory) {
   return (fs::path(out_directory) / fs::path(scene_path).stem()).string() + ".mp4";
@@ -81,7 +98,7 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
   if (!fs::is_directory(scenes_directory)) {
     std::fprintf(stderr, "impulse: no scene directory '%s' (run from the repository root, or pass --scenes DIR)\n",
                  scenes_directory.c_str());
-    return 1;
+    return kExitBadInput;
   }
   std::vector<fs::path> scenes;
   for (const auto& entry : fs::directory_iterator(scenes_directory))
@@ -150,7 +167,11 @@ int main(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "Read a scene file and report any error in it, without rendering");
   check->add_option("scene", scene_path, "Scene file (.toml)")->required();
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error) == 0 ? 0 : kExitBadInput;  // --help is no error
+  }
   const bool progress = !quiet && (force_progress || isatty(STDERR_FILENO));
   try {
     if (*render) {
@@ -172,8 +193,7 @@ int main(int argc, char** argv) {
       return 0;
     }
   } catch (const std::exception& error) {
-    std::fprintf(stderr, "impulse: %s\n", error.what());
-    return 1;
+    return report(error);
   }
   return 0;
 }

@@ -57,10 +57,11 @@ render::DrawList make_draw_list(const Scene& scene, const physics::World& world,
 // Bounded queues between them keep memory flat whatever the video's length.
 void render_scene(const Scene& scene, const RenderOptions& options) {
   const render::VideoSettings& video = scene.video;
-  SceneFilm film(scene, video.width, video.height);
-  render::Renderer renderer(video.width, video.height, options.renderer);
+  // The output first: a path that cannot be written is refused before any simulation.
   std::unique_ptr<render::VideoEncoder> encoder;
   if (!options.video_path.empty()) encoder = std::make_unique<render::VideoEncoder>(options.video_path, video);
+  SceneFilm film(scene, video.width, video.height);
+  render::Renderer renderer(video.width, video.height, options.renderer);
   if (!options.png_directory.empty()) std::filesystem::create_directories(options.png_directory);
   ProgressBar progress(options.progress, scene.path, film.frame_count());
 

@@ -129,7 +129,7 @@ void write_png(const std::string& path, const Frame& frame) {
   PartFile part(path);
   {
     FileHandle file(std::fopen(part.part_path().c_str(), "wb"));
-    if (!file) throw std::runtime_error("cannot open " + part.part_path() + " for writing: " + system_error());
+    if (!file) throw OutputError("cannot open " + part.part_path() + " for writing: " + system_error());
 
     PngErrorState errors;
     PngWriter writer(errors);
@@ -142,10 +142,10 @@ void write_png(const std::string& path, const Frame& frame) {
       rows[row] = const_cast<png_bytep>(frame.rgba.data() + row * row_bytes);
     }
     if (!encode(writer.png(), writer.info(), file.get(), frame, rows.data())) {
-      throw std::runtime_error("cannot write " + part.part_path() + ": " + errors.message);
+      throw OutputError("cannot write " + part.part_path() + ": " + errors.message);
     }
     if (std::fclose(file.release()) != 0) {
-      throw std::runtime_error("cannot write " + part.part_path() + ": " + system_error());
+      throw OutputError("cannot write " + part.part_path() + ": " + system_error());
     }
   }
   part.commit();

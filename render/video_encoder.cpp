@@ -49,6 +49,10 @@ struct VideoEncoder::State {
   [[noreturn]] void fail(const std::string& what, int error_code) const {
     throw std::runtime_error("video " + file.final_path() + ": " + what + ": " + ffmpeg::error_text(error_code));
   }
+  // Writing the file failed (a full disk, a size limit): the reason is the file system's.
+  [[noreturn]] void fail_output(const std::string& what, int error_code) const {
+    throw OutputError("video " + file.final_path() + ": " + what + ": " + ffmpeg::error_text(error_code));
+  }
 
   void open() {
     const std::string& part_path = file.part_path();
@@ -59,9 +63,7 @@ struct VideoEncoder::State {
     format.reset(raw_format);
 
     error = avio_open(&format->pb, part_path.c_str(), AVIO_FLAG_WRITE);
-    if (error < 0) {
-      throw std::runtime_error("cannot open " + part_path + " for writing: " + ffmpeg::error_text(error));
-    }
+    if (error < 0) throw OutputError("cannot open " + part_path + " for writing: " + ffmpeg::error_text(error));
 
     const AVCodec* encoder = find_h264_encoder();
     if (encoder == nullptr) throw std::runtime_error("video " + file.final_path() + ": no H.264 encoder in libavcodec");
@@ -103,7 +105,7 @@ struct VideoEncoder::State {
     ffmpeg::Dictionary options;
     av_dict_set(&options.entries, "movflags", "+faststart", 0);
     error = avformat_write_header(format.get(), &options.entries);
-    if (error < 0) fail("cannot write the mp4 header", error);
+    if (error < 0) fail_output("cannot write the mp4 header", error);
 
     yuv.reset(av_frame_alloc());
     packet.reset(av_packet_alloc());
@@ -137,7 +139,7 @@ struct VideoEncoder::State {
       av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
       error = av_interleaved_write_frame(format.get(), packet.get());  // takes the packet's data
-      if (error < 0) fail("cannot write to " + file.part_path(), error);
+      if (error < 0) fail_output("cannot write to " + file.part_path(), error);
     }
   }
 
@@ -192,9 +194,9 @@ void VideoEncoder::finish() {
   state.failed = true;
   state.encode(nullptr);
   int error = av_write_trailer(state.format.get());
-  if (error < 0) state.fail("cannot write the mp4 trailer", error);
+  if (error < 0) state.fail_output("cannot write the mp4 trailer", error);
   error = avio_closep(&state.format->pb);
-  if (error < 0) state.fail("cannot close " + state.file.part_path(), error);
+  if (error < 0) state.fail_output("cannot close " + state.file.part_path(), error);
   state.file.commit();
   state.finished = true;
   state.failed = false;

@@ -18,7 +18,7 @@ if(NOT EXISTS ${WORK}/bounce.mp4)
 endif()
 
 # An output that cannot be written fails loudly and leaves nothing under the final name.
-expect_exit(1 ${IMPULSE} -q render assets/scenes/bounce.toml -o ${WORK}/missing-dir/bounce.mp4)
+expect_exit(3 ${IMPULSE} -q render assets/scenes/bounce.toml -o ${WORK}/missing-dir/bounce.mp4)
 if(EXISTS ${WORK}/missing-dir/bounce.mp4 OR EXISTS ${WORK}/missing-dir/bounce.mp4.part)
   message(FATAL_ERROR "a failed render left a file behind")
 endif()
