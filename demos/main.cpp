@@ -1,4 +1,5 @@
 // The `impulse` command line: scene files in, teaching videos out.
+#include "demos/interrupts.h"
 #include "demos/render_scene.h"
 #include "demos/scene_file.h"
 #include "demos/video_quality.h"
@@ -172,6 +173,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     return app.exit(error) == 0 ? 0 : kExitBadInput;  // --help is no error
   }
+  demos::install_interrupt_handlers();
   const bool progress = !quiet && (force_progress || isatty(STDERR_FILENO));
   try {
     if (*render) {

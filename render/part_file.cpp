@@ -3,6 +3,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -46,6 +48,34 @@ std::string resolve_links(const std::string& path) {
   return target.string();
 }
 
+// Slots a signal handler can read without locks: a path is copied in before its slot is marked
+// ready, and the slot is freed only after it is unmarked.
+struct SignalSlot {
+  std::atomic<bool> taken{false};
+  std::atomic<bool> ready{false};
+  char path[4096] = {};
+};
+std::array<SignalSlot, 64> signal_slots;
+
+int register_for_signals(const std::string& path) {
+  if (path.size() >= sizeof(SignalSlot::path)) return -1;
+  for (int i = 0; i < static_cast<int>(signal_slots.size()); ++i) {
+    SignalSlot& slot = signal_slots[i];
+    bool expected = false;
+    if (!slot.taken.compare_exchange_strong(expected, true)) continue;
+    std::memcpy(slot.path, path.c_str(), path.size() + 1);
+    slot.ready.store(true);
+    return i;
+  }
+  return -1;  // more files at once than slots: the rest are removed by their destructors only
+}
+
+void unregister_for_signals(int index) {
+  if (index < 0) return;
+  signal_slots[index].ready.store(false);
+  signal_slots[index].taken.store(false);
+}
+
 }  // namespace
 
 PartFile::PartFile(std::string final_path)
@@ -53,10 +83,12 @@ PartFile::PartFile(std::string final_path)
   refuse_unless_regular(final_path_, final_path_);
   refuse_unless_regular(part_path_, part_path_);
   std::remove(part_path_.c_str());  // a regular file left by a run that was killed
+  signal_slot_ = register_for_signals(part_path_);
 }
 
 PartFile::~PartFile() {
   if (!committed_) std::remove(part_path_.c_str());
+  unregister_for_signals(signal_slot_);
 }
 
 void PartFile::commit() {
@@ -65,6 +97,12 @@ void PartFile::commit() {
     throw OutputError("cannot rename " + part_path_ + " to " + final_path_ + ": " + std::strerror(errno));
   }
   committed_ = true;
+}
+
+void remove_unfinished_part_files() noexcept {
+  for (SignalSlot& slot : signal_slots) {
+    if (slot.ready.load()) unlink(slot.path);
+  }
 }
 
 }  // namespace impulse::render

@@ -33,7 +33,12 @@ class PartFile {
  private:
   std::string final_path_;  // symbolic links resolved
   std::string part_path_;
+  int signal_slot_ = -1;
   bool committed_ = false;
 };
+
+// Deletes the .part file of every PartFile alive. Async-signal-safe: for a handler of SIGINT or
+// SIGTERM that then ends the process, so that an interrupted render leaves no temporary behind.
+void remove_unfinished_part_files() noexcept;
 
 }  // namespace impulse::render

@@ -112,6 +112,18 @@ TEST_F(OutputFaults, WritesThroughALinkToARegularFileAndRefusesADanglingOne) {
   expect_no_temporaries();
 }
 
+TEST_F(OutputFaults, AFileSizeLimitIsAnOutputErrorThatKeepsThePreviousVideo) {
+  const fs::path video = work_ / "bounce.mp4";
+  write_previous(video);
+  testing::ChildSettings settings;
+  settings.file_size_limit = 100 * 1024;  // `ulimit -f 100`
+  const testing::ChildResult result = render(video, settings);
+  EXPECT_EQ(result.exit_code, kExitOutput) << result.describe();
+  EXPECT_NE(result.stderr_text.find("File too large"), std::string::npos) << result.stderr_text;
+  EXPECT_EQ(contents(video), kPrevious);
+  expect_no_temporaries();
+}
+
 // A small tmpfs, full during the encode; and the same file system read-only.
 TEST_F(OutputFaults, AFullDiskOrAReadOnlyDirectoryIsAnOutputErrorThatKeepsThePreviousVideo) {
   const fs::path disk = work_ / "disk";
@@ -133,6 +145,50 @@ TEST_F(OutputFaults, AFullDiskOrAReadOnlyDirectoryIsAnOutputErrorThatKeepsThePre
   EXPECT_NE(read_only.stderr_text.find("Read-only file system"), std::string::npos) << read_only.stderr_text;
   EXPECT_EQ(contents(video), kPrevious);
   EXPECT_EQ(umount(disk.c_str()), 0);
+}
+
+// Waits until `path` exists with some bytes in it (the encode is under way), at most 60 s.
+bool wait_for_bytes(const fs::path& path) {
+  for (int i = 0; i < 6000; ++i) {
+    std::error_code error;
+    if (fs::file_size(path, error) > 0 && !error) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return false;
+}
+
+TEST_F(OutputFaults, AnInterruptedRenderKeepsThePreviousVideoAndLeavesNoTemporary) {
+  for (const int signal_number : {SIGINT, SIGTERM}) {
+    const fs::path video = work_ / ("bounce_" + std::to_string(signal_number) + ".mp4");
+    write_previous(video);
+    testing::ChildProcess child(render_arguments(video), with_source({}));
+    ASSERT_TRUE(wait_for_bytes(video.string() + ".part"));
+    kill(child.pid(), signal_number);
+    const testing::ChildResult result = child.wait();
+    EXPECT_EQ(result.signal, signal_number) << result.describe();
+    EXPECT_NE(result.stderr_text.find("interrupted"), std::string::npos) << result.stderr_text;
+    EXPECT_EQ(contents(video), kPrevious);
+  }
+  expect_no_temporaries();
+}
+
+TEST_F(OutputFaults, AnInterruptedCatalogueKeepsTheVideosItFinished) {
+  const fs::path scenes = work_ / "scenes";
+  fs::create_directory(scenes);
+  for (const char* name : {"a.toml", "b.toml"}) {
+    fs::copy_file(fs::path(IMPULSE_SOURCE_DIR) / "assets/scenes/bounce.toml", scenes / name);
+  }
+  const fs::path out = work_ / "out";
+  testing::ChildProcess child({IMPULSE_PROGRAM, "-q", "catalogue", "--scenes", scenes.string(), "-o", out.string(),
+                               "--quality", "low"},
+                              with_source({}));
+  ASSERT_TRUE(wait_for_bytes(out / "b.mp4.part"));
+  kill(child.pid(), SIGINT);
+  const testing::ChildResult result = child.wait();
+  EXPECT_EQ(result.signal, SIGINT) << result.describe();
+  EXPECT_GT(fs::file_size(out / "a.mp4"), 1000u);
+  EXPECT_FALSE(fs::exists(out / "b.mp4"));
+  expect_no_temporaries();
 }
 
 }  // namespace
