@@ -78,7 +78,6 @@ class World {
   void integrate_velocities(Real h);
   void integrate_velocity(BodyState& s, Real h) const;
   static void integrate_position(BodyState& s, Real h);
-  static Vec3 gyroscopic_step(const BodyState& s, Real h);
   void integrate_positions(Real h);
   void store_states();
   void check_finite() const;
