@@ -1,8 +1,9 @@
 // The `impulse` command line: scene files in, teaching videos out.
 #include "demos/interrupts.h"
-#include "demos/render_scene.h"
-#include "demos/scene_file.h"
-#include "demos/video_quality.h"
+#include "demos/progress_bar.h"
+#include "demos/film/render_scene.h"
+#include "demos/scene/scene_file.h"
+#include "demos/scene/video_quality.h"
 
 #include <CLI/CLI.hpp>
 
@@ -34,9 +35,10 @@ struct VideoOverrides {
   std::string x264_preset;  // empty: the scene's
   int samples = 4;
   std::string spheres = "impostor";
+  std::string shadows = "ground";
 
   void apply(demos::Scene& scene, demos::RenderOptions& options) const {
-    render::VideoSettings& video = scene.video;
+    demos::VideoSetting& video = scene.video;
     if (!quality.empty()) {
       const std::string scene_preset = video.preset;  // size, rate and CRF come with the quality, not the encoder speed
       video = *demos::quality_preset(quality);
@@ -51,6 +53,9 @@ struct VideoOverrides {
       throw std::invalid_argument("--width and --height must be even (H.264 yuv420p halves the colour planes)");
     options.renderer.samples = samples;
     options.renderer.spheres = spheres == "tessellated" ? render::SphereMethod::tessellated : render::SphereMethod::impostor;
+    options.renderer.shadows = shadows == "map"    ? render::ShadowMethod::shadow_map
+                               : shadows == "none" ? render::ShadowMethod::none
+                                                   : render::ShadowMethod::ground;
   }
 };
 
@@ -85,10 +90,14 @@ std::vector<int> parse_frames(const std::string& list) {
   return frames;
 }
 
-int render_one(const std::string& scene_path, demos::RenderOptions options, const VideoOverrides& overrides) {
+int render_one(const std::string& scene_path, demos::RenderOptions options, const VideoOverrides& overrides,
+               bool progress) {
   demos::Scene scene = demos::load_scene(scene_path);
   overrides.apply(scene, options);
+  demos::ProgressBar bar(progress, scene_path);
+  options.progress = [&bar](int done, int total) { bar.update(done, total); };
   demos::render_scene(scene, options);
+  bar.finish();
   if (!options.video_path.empty()) std::fprintf(stderr, "wrote %s\n", options.video_path.c_str());
   if (!options.png_directory.empty()) std::fprintf(stderr, "wrote frames to %s/\n", options.png_directory.c_str());
   return 0;
@@ -109,8 +118,7 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
   for (const fs::path& scene : scenes) {
     demos::RenderOptions options;
     options.video_path = default_video_path(scene.string(), out_directory);
-    options.progress = progress;
-    render_one(scene.string(), options, overrides);
+    render_one(scene.string(), options, overrides, progress);
   }
   std::fprintf(stderr, "rendered %zu scenes into %s/\n", scenes.size(), out_directory.c_str());
   return 0;
@@ -136,6 +144,10 @@ void add_video_options(CLI::App* command, VideoOverrides& overrides) {
   command->add_option("--spheres", overrides.spheres,
                       "How spheres are drawn: impostor (ray-cast, default) or tessellated (size-chosen meshes)")
       ->check(CLI::IsMember({"impostor", "tessellated"}));
+  command->add_option("--shadows", overrides.shadows,
+                      "Shadows: ground (on the ground only, drawn as geometry; default), map (on every body too, "
+                      "from a shadow map; slower) or none")
+      ->check(CLI::IsMember({"ground", "map", "none"}));
 }
 
 }  // namespace
@@ -184,9 +196,8 @@ int main(int argc, char** argv) {
         if (png_directory.empty()) throw std::invalid_argument("--frames chooses PNG frames: add --png DIR");
         options.png_frames = parse_frames(frame_list);
       }
-      options.progress = progress;
       if (video_path.empty()) fs::create_directories("out");
-      return render_one(scene_path, options, render_overrides);
+      return render_one(scene_path, options, render_overrides, progress);
     }
     if (*catalogue) return render_catalogue(scenes_directory, out_directory, progress, catalogue_overrides);
     if (*check) {

@@ -6,15 +6,15 @@
 
 namespace impulse::demos {
 
-ProgressBar::ProgressBar(bool enabled, std::string label, int total_frames, std::FILE* stream)
+ProgressBar::ProgressBar(bool enabled, std::string label, std::FILE* stream)
     : enabled_(enabled),
       label_(std::move(label)),
-      total_(std::max(total_frames, 1)),
       stream_(stream),
       terminal_(isatty(fileno(stream)) != 0) {}
 
-void ProgressBar::update(int frames_done) {
+void ProgressBar::update(int frames_done, int total_frames) {
   if (!enabled_) return;
+  total_ = std::max(total_frames, 1);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   if (seconds < 1.0 || seconds - last_draw_ < (terminal_ ? 0.1 : 5.0)) return;  // short renders stay quiet
   draw(frames_done, seconds);

@@ -11,8 +11,8 @@ namespace impulse::demos {
 
 class ProgressBar {
  public:
-  ProgressBar(bool enabled, std::string label, int total_frames, std::FILE* stream = stderr);
-  void update(int frames_done);
+  ProgressBar(bool enabled, std::string label, std::FILE* stream = stderr);
+  void update(int frames_done, int total_frames);
   void finish();
 
  private:
@@ -20,7 +20,7 @@ class ProgressBar {
 
   bool enabled_;
   std::string label_;
-  int total_;
+  int total_ = 1;
   std::FILE* stream_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   double last_draw_ = -1.0;

@@ -6,15 +6,6 @@
 
 namespace impulse::physics {
 
-const char* shape_name(ShapeType type) {
-  switch (type) {
-    case ShapeType::sphere: return "sphere";
-    case ShapeType::box: return "box";
-    case ShapeType::plane: return "plane";
-  }
-  return "?";
-}
-
 Real shape_volume(const Shape& shape) {
   switch (shape.type) {
     case ShapeType::sphere: return Real(4) / 3 * std::numbers::pi * std::pow(shape.radius, 3);

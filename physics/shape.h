@@ -22,8 +22,6 @@ struct Shape {
   static Shape plane(const Vec3& n, Real d) { Shape s; s.type = ShapeType::plane; s.normal = n; s.offset = d; return s; }
 };
 
-const char* shape_name(ShapeType type);
-
 // Corner `index` (0..7) of a box of half extents `half` centred on the origin: bits 0, 1, 2 of
 // the index set mean +x, +y, +z. Collision feature ids name corners by this index.
 inline Vec3 box_corner(const Vec3& half, int index) {

@@ -26,10 +26,6 @@ GlContext::GlContext() : default_buffer_(kBufferSize * kBufferSize, 0u) {
         "(needs Mesa >= 20 with the llvmpipe driver; check GALLIUM_DRIVER is unset or llvmpipe)");
   }
   make_current();
-  const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  version_ = version != nullptr ? version : "";
-  renderer_ = renderer != nullptr ? renderer : "";
 }
 
 GlContext::~GlContext() {

@@ -18,15 +18,11 @@ class GlContext {
   GlContext& operator=(const GlContext&) = delete;
 
   void make_current();               // throws std::runtime_error
-  const std::string& version() const { return version_; }    // GL_VERSION
-  const std::string& renderer() const { return renderer_; }  // GL_RENDERER, e.g. "llvmpipe (...)"
 
  private:
   static constexpr int kBufferSize = 16;
   osmesa_context* context_ = nullptr;
   std::vector<uint32_t> default_buffer_;  // RGBA, kBufferSize x kBufferSize; uint32_t keeps it 4-aligned
-  std::string version_;
-  std::string renderer_;
 };
 
 }  // namespace impulse::render

@@ -63,4 +63,8 @@ struct Overlay {
   }
 };
 
+// A value as labels and plots write it: three significant figures without an exponent (2.41,
+// 24.1, 241).
+std::string three_figures(double value);
+
 }  // namespace impulse::render

@@ -1,5 +1,7 @@
 #include "render/overlay_painter.h"
 
+#include "render/palette.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -18,7 +20,7 @@ constexpr const char* kFont = "DejaVu Sans";
 constexpr const char* kMonoFont = "DejaVu Sans Mono";
 const Colour kInk{0.13f, 0.13f, 0.15f};
 const Colour kMutedInk{0.35f, 0.36f, 0.40f};
-const Colour kHighlight{0.84f, 0.37f, 0.00f};  // vermillion, as the contact normals
+const Colour kHighlight = okabe_ito::vermillion;  // as the contact normals
 
 void set_colour(cairo_t* cr, const Colour& colour, double alpha = 1.0) {
   cairo_set_source_rgba(cr, colour.r, colour.g, colour.b, alpha);
@@ -64,13 +66,6 @@ void legend_arrow(cairo_t* cr, double x0, double y, double length, double scale,
   cairo_line_to(cr, x0 + length - head_length, y + head_half);
   cairo_close_path(cr);
   cairo_fill(cr);
-}
-
-std::string format_value(double value) {
-  char text[32];
-  const double magnitude = std::abs(value);
-  std::snprintf(text, sizeof text, magnitude >= 100 ? "%.0f" : magnitude >= 10 ? "%.1f" : "%.2f", value);
-  return text;
 }
 
 // Splits `text` at spaces into lines no wider than `max_width`.
@@ -240,7 +235,7 @@ void OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
     cairo_move_to(cr, x + pad, y + pad + title_size * 0.8);
     cairo_show_text(cr, heading.c_str());
     if (!plot.points.empty()) {
-      const std::string value = format_value(plot.points.back().y());  // the unit is in the heading
+      const std::string value = three_figures(plot.points.back().y());  // the unit is in the heading
       set_font(cr, title_size, true, true);
       set_colour(cr, plot.colour);
       cairo_move_to(cr, x + plot_width - pad - text_width(cr, value), y + pad + title_size * 0.8);
@@ -417,6 +412,13 @@ void OverlayPainter::paint(const Overlay& overlay, Frame& frame) {
     throw std::runtime_error(std::string("overlay: cairo failed: ") + cairo_status_to_string(cairo_status(c.context.get())));
   }
   c.composite_onto(frame);
+}
+
+std::string three_figures(double value) {
+  char text[32];
+  const double magnitude = std::abs(value);
+  std::snprintf(text, sizeof text, magnitude >= 100 ? "%.0f" : magnitude >= 10 ? "%.1f" : "%.2f", value);
+  return text;
 }
 
 }  // namespace impulse::render

@@ -10,7 +10,7 @@
 namespace impulse::render {
 
 // How spheres become pixels. Both give outlines within a quarter pixel of a true circle at any
-// size; tests/bench/render_bench measures both (README.md, "Speed").
+// size; tests/bench/render_bench measures both (tests/bench/README.md).
 enum class SphereMethod {
   impostor,     // a quad per sphere, ray-cast per multisample in the fragment shader
   tessellated,  // an icosphere per sphere, subdivided by its size on screen

@@ -4,7 +4,7 @@
 // width (LP_NATIVE_VECTOR_WIDTH). A vertex shader compiled 8 vertices wide (256 bits, the default
 // on AVX machines) and loaded by a process running 4 wide (128 bits) writes 8 vertices at a time
 // into a buffer llvmpipe sized for multiples of 4: a heap overflow on any draw of a vertex count
-// that is not a multiple of 8 (render/README.md, "Mesa's shader cache"). So each width gets a
+// that is not a multiple of 8 (render/README.md, "Mesa's shader cache and the vector width"). So each width gets a
 // cache directory of its own.
 #pragma once
 

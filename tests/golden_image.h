@@ -4,7 +4,7 @@
 //
 // Goldens live in assets/golden/NAME.png. On a failure the actual image and a diff image (the
 // differing pixels red over a faded golden) go to out/golden/, and the message says where.
-// IMPULSE_UPDATE_GOLDEN=1 rewrites the goldens from the actual images instead (README.md, "Tests").
+// IMPULSE_UPDATE_GOLDEN=1 rewrites the goldens from the actual images instead (render/README.md, "Golden images").
 #pragma once
 #include <string>
 

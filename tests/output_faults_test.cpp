@@ -1,5 +1,5 @@
 // The `impulse` program when its output cannot be written or its run is cut short: a clear
-// message, the documented exit code (README.md, "Exit codes"), the previous video under the final
+// message, the documented exit code (README.md, "The command line"), the previous video under the final
 // name untouched, nothing but a regular file ever replaced, and no temporary file left behind.
 #include <sys/mount.h>
 #include <sys/sysmacros.h>

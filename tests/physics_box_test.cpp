@@ -1,4 +1,5 @@
 // Boxes: restitution, rest without jiggle, stacks that hold, energy and angular momentum.
+#include "physics/pyramid.h"
 #include "tests/physics_test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -139,9 +140,7 @@ INSTANTIATE_TEST_SUITE_P(Stack, TowerStack, ::testing::Values(10, 20));
 
 std::vector<int> add_pyramid(World& world, int base) {
   std::vector<int> boxes;
-  for (int row = 0; row < base; ++row)
-    for (int i = 0; i < base - row; ++i)
-      boxes.push_back(add_box(world, Vec3(-0.5 * (base - row - 1) + i, 0.5 + row, 0), kUnit, 1.0));
+  for (const PyramidBox& box : pyramid_boxes(base)) boxes.push_back(add_box(world, box.centre, kUnit, 1.0));
   return boxes;
 }
 

@@ -1,7 +1,7 @@
 // The whole renderer in child processes under every llvmpipe setting a machine may run it with:
 // vector width unset (the CPU's choice), 256 and 128 bits, each with 0, 1 and 2 rasteriser
 // threads, all sharing one fresh shader cache in that order, so that a width reads shaders that
-// another width compiled before it (the heap overflow of render/README.md, "Mesa's shader cache").
+// another width compiled before it (the heap overflow of render/README.md, "Mesa's shader cache and the vector width").
 // A child that aborts, crashes or fails fails the test, whatever the machine's CPU.
 #include <unistd.h>
 

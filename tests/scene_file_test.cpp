@@ -1,5 +1,5 @@
 // Scene files: good ones load, bad ones are refused with file, line, field and reason.
-#include "demos/scene_file.h"
+#include "demos/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 

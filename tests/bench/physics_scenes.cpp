@@ -1,5 +1,7 @@
 #include "tests/bench/physics_scenes.h"
 
+#include "physics/pyramid.h"
+
 #include <numbers>
 #include <stdexcept>
 
@@ -62,10 +64,7 @@ Scene pyramid(const std::string& name, int base) {
   Scene s;
   s.name = name;
   s.bodies.push_back(ground());
-  for (int row = 0; row < base; ++row) {
-    const int count = base - row;
-    for (int i = 0; i < count; ++i) s.bodies.push_back(unit_cube({-0.5 * (count - 1) + i, 0.5 + row, 0}));
-  }
+  for (const physics::PyramidBox& box : physics::pyramid_boxes(base)) s.bodies.push_back(unit_cube({box.centre.x(), box.centre.y(), box.centre.z()}));
   s.top = s.dynamic_count() - 1;
   s.any_drift = true;
   return s;

@@ -1,6 +1,6 @@
 // render_bench: how fast a frame of 300 spheres, 100 boxes and 400 arrows (with a lecture
 // overlay) goes from a draw list to an MP4, phase by phase, against the naive peer (a PNG file
-// per frame, then the ffmpeg program). Prints one table; README.md, "Speed", records its figures.
+// per frame, then the ffmpeg program). Prints one table; tests/bench/README.md records its figures.
 //
 //   render_bench                   1280x720, 90 frames a phase, and peak memory of 10 s and 60 s videos
 //   render_bench --frames 300      more frames per phase

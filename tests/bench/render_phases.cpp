@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "render/frame_pipeline.h"
+#include "demos/film/frame_pipeline.h"
 #include "render/overlay_painter.h"
 #include "render/png_io.h"
 #include "tests/bench/bench_frame.h"
@@ -107,12 +107,12 @@ Timing time_end_to_end(const BenchSettings& settings, int frames, const std::str
   render::Renderer renderer(settings.width, settings.height, settings.renderer);
   render::VideoEncoder encoder(path, settings.video());
   render::OverlayPainter painter(settings.width, settings.height);
-  render::FramePipeline pipeline(3, [&](render::FrameJob& job) {
+  demos::FramePipeline pipeline(3, [&](demos::FrameJob& job) {
     painter.paint(job.overlay, job.frame);
     encoder.add_frame(job.frame);
   });
   for (int i = 0; i < frames; ++i) {
-    render::FrameJob& job = pipeline.acquire();
+    demos::FrameJob& job = pipeline.acquire();
     renderer.draw_into(bench_draw_list(frame_time(i, settings.fps)), job.frame);
     job.overlay = bench_overlay(frame_time(i, settings.fps), duration);
     pipeline.submit();

@@ -27,7 +27,7 @@ struct BenchSettings {
 Timing time_drawing(const BenchSettings& settings, int frames);
 Timing time_overlay(const BenchSettings& settings, int frames);
 Timing time_encoding(const BenchSettings& settings, int frames, const std::string& path);
-// Draws, paints the overlay and encodes `frames` frames through render::FramePipeline.
+// Draws, paints the overlay and encodes `frames` frames through demos::FramePipeline.
 Timing time_end_to_end(const BenchSettings& settings, int frames, const std::string& path);
 // The same frames, each written as a PNG into `directory`, then `ffmpeg` encodes them to `path`.
 // Throws std::runtime_error if the ffmpeg program is missing or fails.

@@ -1,0 +1,13 @@
+// The captions a frame shows: each [[caption]] from its start to its end (simulated seconds),
+// fading in and out over the first and last 0.2 s of its time cue.
+#pragma once
+#include "demos/scene/view_options.h"
+#include "render/overlay.h"
+
+#include <vector>
+
+namespace impulse::demos {
+
+std::vector<render::Caption> captions_at(const std::vector<CaptionCue>& cues, double time);
+
+}  // namespace impulse::demos

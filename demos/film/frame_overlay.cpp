@@ -1,0 +1,101 @@
+#include "demos/film/frame_overlay.h"
+
+#include "demos/film/captions.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace impulse::demos {
+namespace {
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+std::string playback_text(double speed, bool slow_motion, double base_speed) {
+  if (slow_motion) return "slow motion \u00d7" + format("%.2f", speed);
+  if (std::abs(speed - 1.0) < 1e-6 && std::abs(base_speed - 1.0) < 1e-6) return "real time";
+  return "playback \u00d7" + format("%.2f", speed);
+}
+
+}  // namespace
+
+int label_body(const Scene& scene) {
+  return scene.overlay.label_body.empty() ? -1 : find_body(scene, scene.overlay.label_body);
+}
+
+LabelledImpulse labelled_impulse(const std::vector<physics::ContactRecord>& contacts,
+                                 const std::vector<physics::Body>& bodies, int label_body) {
+  LabelledImpulse labelled;
+  double largest = 0;
+  for (const physics::ContactRecord& contact : contacts) {
+    for (int body : {contact.body_a, contact.body_b}) {
+      const bool chosen = body >= 0 && body < int(bodies.size()) && !bodies[body].is_static() &&
+                          (label_body < 0 || body == label_body);
+      if (!chosen || !(contact.normal_impulse > largest)) continue;
+      largest = contact.normal_impulse;
+      labelled = {&contact, body};
+    }
+  }
+  return labelled;
+}
+
+FrameOverlay::FrameOverlay(const Scene& scene, TakeSummary summary, const ArrowScales& scales, int width,
+                           int height)
+    : scene_(scene), summary_(std::move(summary)), scales_(scales), width_(width), height_(height),
+      label_body_(label_body(scene)) {}
+
+void FrameOverlay::add_label(const FrameState& state, const render::CameraView& view, render::Overlay& overlay) const {
+  const std::string& kind = scene_.overlay.label;
+  const auto& bodies = *state.bodies;
+  render::Vec3f tip = render::Vec3f::Zero();
+  std::string text;
+  render::Colour colour;
+  if (kind == "impulse") {
+    const LabelledImpulse labelled = labelled_impulse(*state.contacts, bodies, label_body_);
+    const double largest = labelled.contact != nullptr ? labelled.contact->normal_impulse : 0.0;
+    // A touching contact that pushes nothing (0.00 N s) is not worth a label.
+    if (!(largest >= 0.005 && largest > 1e-3 * summary_.largest_impulse)) return;
+    tip = labelled.contact->point.cast<float>() + impulse_on(*labelled.contact, labelled.body) * float(scales_.impulse);
+    text = "J = " + render::three_figures(largest) + " N\u00b7s";
+    colour = mark_colour::normal_impulse;
+  } else if (kind == "velocity") {
+    double fastest = -1;
+    for (size_t i = 0; i < bodies.size(); ++i) {
+      const bool chosen = !bodies[i].is_static() && (label_body_ < 0 || int(i) == label_body_);
+    if (!chosen || !(bodies[i].velocity.norm() > fastest)) continue;
+      fastest = bodies[i].velocity.norm();
+      tip = ((*state.poses)[i].position + bodies[i].velocity * scales_.velocity).cast<float>();
+    }
+    if (fastest < 0) return;
+    text = "v = " + render::three_figures(fastest) + " m/s";
+    colour = mark_colour::velocity;
+  } else {
+    return;
+  }
+  if (const auto pixels = view.to_pixels(tip)) overlay.labels.push_back({*pixels, text, colour});
+}
+
+void FrameOverlay::make(const FrameState& state, const PlotRecorder& plots, render::Overlay& overlay) const {
+  const OverlayOptions& options = scene_.overlay;
+  const render::CameraView view = render::make_camera_view(state.camera, width_, height_);
+  overlay.title = options.title ? scene_.title : "";
+  overlay.captions = captions_at(scene_.captions, state.time);
+  overlay.labels.clear();
+  add_label(state, view, overlay);
+  overlay.clock = options.clock ? format("t = %.2f s", state.time) : "";
+  overlay.playback = options.clock ? playback_text(state.speed, state.slow_motion, scene_.playback.speed) : "";
+  overlay.playback_highlight = state.slow_motion;
+  overlay.legend = options.legend ? legend(scene_.draw, scales_, view, state.camera.target) : std::vector<render::LegendEntry>{};
+  if (!options.plots.empty()) {
+    const int body = plotted_body(*state.bodies, options.plot_body);
+    overlay.plots = plots.plots(state.plotted_steps, scene_.duration, summary_.plot_maxima,
+                                body >= 0 ? (*state.bodies)[body].name : "");
+  } else {
+    overlay.plots.clear();
+  }
+}
+
+}  // namespace impulse::demos

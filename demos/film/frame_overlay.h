@@ -1,0 +1,57 @@
+// The 2D overlay of one frame of a scene: title, legend, captions, the clock and playback speed,
+// a label with the value beside the chosen arrow, and the live plots.
+#pragma once
+#include "demos/film/marks.h"
+#include "demos/film/plot_recorder.h"
+#include "demos/film/scene_draw_list.h"
+#include "demos/scene/scene_file.h"
+#include "demos/film/world_take.h"
+#include "render/camera_view.h"
+#include "render/overlay.h"
+
+#include <string>
+#include <vector>
+
+namespace impulse::demos {
+
+// The contact and body whose normal impulse the "impulse" label writes: the first largest on a
+// moving body (on `label_body` only, unless it is -1). Null when no contact pushes.
+struct LabelledImpulse {
+  const physics::ContactRecord* contact = nullptr;
+  int body = -1;
+};
+LabelledImpulse labelled_impulse(const std::vector<physics::ContactRecord>& contacts,
+                                 const std::vector<physics::Body>& bodies, int label_body);
+int label_body(const Scene& scene);  // [overlay] label_body's index, -1 for any
+
+struct FrameState {
+  double time = 0;            // simulated s shown
+  double speed = 1;           // playback factor at that moment
+  bool slow_motion = false;   // slowed for an impact
+  const std::vector<physics::Body>* bodies = nullptr;
+  const std::vector<BodyPose>* poses = nullptr;
+  const std::vector<physics::ContactRecord>* contacts = nullptr;
+  int64_t plotted_steps = 0;  // steps the plots show
+  render::Camera camera;
+};
+
+class FrameOverlay {
+ public:
+  FrameOverlay(const Scene& scene, TakeSummary summary, const ArrowScales& scales, int width, int height);
+
+  // Fills `overlay` (reusing its memory) for the frame.
+  void make(const FrameState& state, const PlotRecorder& plots, render::Overlay& overlay) const;
+
+ private:
+  void add_label(const FrameState& state, const render::CameraView& view, render::Overlay& overlay) const;
+
+  const Scene& scene_;
+  TakeSummary summary_;
+  ArrowScales scales_;
+  int width_;
+  int height_;
+  int label_body_ = -1;   // -1: the largest anywhere
+  std::string plot_body_name_;
+};
+
+}  // namespace impulse::demos

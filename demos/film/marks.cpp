@@ -1,0 +1,72 @@
+#include "demos/film/marks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace impulse::demos {
+namespace {
+
+// The largest 1, 2 or 5 x 10^k not above `x` (> 0).
+double round_down(double x) {
+  const double decade = std::pow(10.0, std::floor(std::log10(x)));
+  for (double m : {5.0, 2.0, 1.0})
+    if (m * decade <= x * (1 + 1e-9)) return m * decade;
+  return decade;
+}
+
+double auto_scale(double chosen, double largest) {
+  constexpr double kLongest = 1.5;  // m, the largest value's arrow
+  if (chosen > 0) return chosen;
+  return largest > 1e-9 ? round_down(kLongest / largest) : 1.0;
+}
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// "normal impulse, = 50 N·s": a round value whose arrow is 40..110 pixels at the target.
+render::LegendEntry scaled_entry(const std::string& what, const char* unit, render::Colour colour,
+                                 double metres_per_unit, double pixels_per_metre) {
+  const double pixels_per_unit = metres_per_unit * pixels_per_metre;
+  if (!(pixels_per_unit > 0)) return {colour, what, 0.0f, false};
+  const double value = round_down(110.0 / pixels_per_unit);
+  return {colour, what + ": " + number(value) + " " + unit, float(value * pixels_per_unit), false};
+}
+
+}  // namespace
+
+ArrowScales arrow_scales(const Scene& scene, const TakeSummary& summary) {
+  const DrawOptions& draw = scene.draw;
+  double smallest = 0.4;  // m, when nothing moves
+  bool found = false;
+  for (const physics::BodyDef& body : scene.bodies) {
+    if (body.is_static || body.shape.type == physics::ShapeType::plane) continue;
+    const double size = body.shape.type == physics::ShapeType::sphere ? body.shape.radius : body.shape.half_extents.minCoeff();
+    smallest = found ? std::min(smallest, size) : size;
+    found = true;
+  }
+  const double normal = draw.normal_length > 0 ? draw.normal_length : std::clamp(1.5 * smallest, 0.05, 1.0);
+  return {auto_scale(draw.impulse_scale, summary.largest_impulse), auto_scale(draw.velocity_scale, summary.largest_speed),
+          normal};
+}
+
+std::vector<render::LegendEntry> legend(const DrawOptions& draw, const ArrowScales& scales,
+                                        const render::CameraView& camera, const render::Vec3f& target) {
+  const double pixels_per_metre = camera.pixels_per_metre(target);
+  std::vector<render::LegendEntry> entries;
+  if (draw.contact_points) entries.push_back({mark_colour::contact_point, "contact point", 0.0f, true});
+  if (draw.contact_normals) entries.push_back({mark_colour::contact_normal, "contact normal", 0.0f, false});
+  if (draw.impulses)
+    entries.push_back(scaled_entry("normal impulse", "N\u00b7s", mark_colour::normal_impulse, scales.impulse, pixels_per_metre));
+  if (draw.friction)
+    entries.push_back(scaled_entry("friction impulse", "N\u00b7s", mark_colour::friction_impulse, scales.impulse, pixels_per_metre));
+  if (draw.velocities)
+    entries.push_back(scaled_entry("velocity", "m/s", mark_colour::velocity, scales.velocity, pixels_per_metre));
+  return entries;
+}
+
+}  // namespace impulse::demos

@@ -1,0 +1,39 @@
+// The teaching marks drawn over the bodies, one convention for every demo (demos/README.md, "What
+// a frame shows"): their colours, and the scales that turn impulses and velocities into arrow lengths.
+#pragma once
+#include "demos/scene/scene_file.h"
+#include "demos/film/take_summary.h"
+#include "render/camera_view.h"
+#include "render/overlay.h"
+#include "render/palette.h"
+
+#include <vector>
+
+namespace impulse::demos {
+
+namespace mark_colour {
+inline constexpr render::Colour contact_point{0.00f, 0.00f, 0.00f};  // black dot
+inline constexpr render::Colour contact_normal = render::okabe_ito::vermillion;
+inline constexpr render::Colour normal_impulse = render::okabe_ito::blue;
+inline constexpr render::Colour friction_impulse = render::okabe_ito::reddish_purple;
+inline constexpr render::Colour velocity{0.20f, 0.20f, 0.20f};          // near black
+inline constexpr render::Colour joint{0.45f, 0.45f, 0.47f};             // grey: rods, ropes, pivots
+}  // namespace mark_colour
+
+struct ArrowScales {
+  double impulse = 1.0;        // m of arrow per N s
+  double velocity = 1.0;       // m of arrow per m/s
+  double normal_length = 0.6;  // m
+};
+
+// The scene's scales, or (for 0) a round number (1, 2 or 5 times a power of ten) that draws the
+// largest value of the run about 1.5 m long; normals (for 0) 1.5 times the smallest moving
+// body's radius or half-size.
+ArrowScales arrow_scales(const Scene& scene, const TakeSummary& summary);
+
+// The legend for the marks the scene draws. Arrow entries show how long a round value (1 N s,
+// 0.5 m/s, ...) is on screen at the camera's target.
+std::vector<render::LegendEntry> legend(const DrawOptions& draw, const ArrowScales& scales,
+                                        const render::CameraView& camera, const render::Vec3f& target);
+
+}  // namespace impulse::demos

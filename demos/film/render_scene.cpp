@@ -1,0 +1,104 @@
+#include "demos/film/render_scene.h"
+
+#include "demos/film/marks.h"
+#include "demos/film/render_types.h"
+#include "demos/film/scene_draw_list.h"
+#include "demos/film/scene_film.h"
+#include "demos/film/frame_pipeline.h"
+#include "demos/film/handoff_queue.h"
+#include "render/overlay_painter.h"
+#include "render/png_io.h"
+#include "render/video_encoder.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <thread>
+
+namespace impulse::demos {
+
+namespace {
+
+constexpr int kFramesInFlight = 3;  // drawn, being finished, waiting: enough to keep both busy
+constexpr size_t kPicturesAhead = 2;  // frames the simulation may run ahead of the drawing
+
+std::string frame_file(const std::string& directory, int64_t index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05lld.png", static_cast<long long>(index));
+  return (std::filesystem::path(directory) / name).string();
+}
+
+bool wants_png(const RenderOptions& options, int64_t index) {
+  if (options.png_directory.empty()) return false;
+  return options.png_frames.empty() ||
+         std::find(options.png_frames.begin(), options.png_frames.end(), index) != options.png_frames.end();
+}
+
+}  // namespace
+
+render::DrawList make_draw_list(const Scene& scene, const physics::World& world, const physics::StepRecord& record) {
+  return scene_draw_list(scene, world.bodies(), poses_of(world.bodies()), world.joints(), record.contacts,
+                         arrow_scales(scene, TakeSummary{}), to_render(scene.camera));
+}
+
+// Three threads, each a stage: the simulation (and what each frame shows) runs ahead on its own
+// thread; this thread draws (with llvmpipe's threads); a worker paints the overlay and encodes.
+// Bounded queues between them keep memory flat whatever the video's length.
+void render_scene(const Scene& scene, const RenderOptions& options) {
+  const render::VideoSettings video = to_render(scene.video);
+  // The output first: a path that cannot be written is refused before any simulation.
+  std::unique_ptr<render::VideoEncoder> encoder;
+  if (!options.video_path.empty()) encoder = std::make_unique<render::VideoEncoder>(options.video_path, video);
+  SceneFilm film(scene, video.width, video.height);
+  render::Renderer renderer(video.width, video.height, options.renderer);
+  if (!options.png_directory.empty()) std::filesystem::create_directories(options.png_directory);
+
+  // The worker finishes frames in order: overlay, PNG, encoder. Declared after the encoder, so
+  // it stops before the encoder (and its .part file) goes.
+  render::OverlayPainter painter(video.width, video.height);
+  std::atomic<int> frames_finished{0};
+  FramePipeline pipeline(kFramesInFlight, [&](FrameJob& job) {
+    painter.paint(job.overlay, job.frame);
+    if (wants_png(options, job.index)) render::write_png(frame_file(options.png_directory, job.index), job.frame);
+    if (encoder) encoder->add_frame(job.frame);
+    ++frames_finished;
+  });
+
+  HandoffQueue<ScenePicture> pictures(kPicturesAhead);
+  std::thread simulation([&] {
+    try {
+      while (film.next_frame() < film.frame_count()) {
+        ScenePicture picture;
+        film.next(picture);
+        if (!pictures.push(std::move(picture))) return;  // the drawing stopped
+      }
+      pictures.close();
+    } catch (...) {
+      pictures.fail(std::current_exception());
+    }
+  });
+  // However this function ends, the simulation stops before the film it reads goes.
+  struct StopSimulation {
+    HandoffQueue<ScenePicture>& pictures;
+    std::thread& thread;
+    ~StopSimulation() {
+      pictures.close();
+      thread.join();
+    }
+  } stop{pictures, simulation};
+
+  while (std::optional<ScenePicture> picture = pictures.pop()) {
+    FrameJob& job = pipeline.acquire();
+    renderer.draw_into(picture->draw_list, job.frame);
+    job.overlay = std::move(picture->overlay);
+    pipeline.submit();
+    if (options.progress) options.progress(frames_finished, film.frame_count());
+  }
+  pipeline.finish();
+  if (encoder) encoder->finish();
+}
+
+}  // namespace impulse::demos

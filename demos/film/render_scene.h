@@ -1,0 +1,34 @@
+// Runs a scene and films it: world -> steps -> draw list -> frame (+ overlay) -> MP4 (and PNGs).
+// The simulation runs a couple of frames ahead on a thread of its own (scene_film.h); drawing
+// happens on the calling thread (llvmpipe adds its own threads); the overlay, PNG files and the
+// encoder run on a worker thread, a few frames behind (render/frame_pipeline.h).
+#pragma once
+#include "demos/scene/scene_file.h"
+#include "physics/world.h"
+#include "render/draw_list.h"
+#include "render/renderer.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace impulse::demos {
+
+struct RenderOptions {
+  std::string video_path;        // .mp4; empty: no video
+  std::string png_directory;     // empty: no PNG frames
+  std::vector<int> png_frames;   // which frames become PNGs (numbered from 0); empty: all
+  // Called after each frame is drawn, with the frames finished and the frame count.
+  std::function<void(int frames_done, int frame_count)> progress;
+  render::RendererSettings renderer;
+};
+
+// What a frame shows of the world as it is, with the last step's contacts (no hold, no
+// interpolation, arrow scales of 1 m per unit unless the scene sets them): for tests and stills.
+render::DrawList make_draw_list(const Scene& scene, const physics::World& world, const physics::StepRecord& record);
+
+// Renders the whole scene. Throws on any failure; a video is complete under its final name or
+// absent.
+void render_scene(const Scene& scene, const RenderOptions& options);
+
+}  // namespace impulse::demos

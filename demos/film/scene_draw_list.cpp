@@ -1,0 +1,122 @@
+#include "demos/film/scene_draw_list.h"
+
+#include "demos/film/render_types.h"
+
+namespace impulse::demos {
+namespace {
+
+render::Vec3f to_float(const physics::Vec3& v) { return v.cast<float>(); }
+
+bool moves(const std::vector<physics::Body>& bodies, int index) {
+  return index >= 0 && index < int(bodies.size()) && !bodies[index].is_static();
+}
+
+// Where arrows overlap, the one drawn on top (render::ArrowItem::layer).
+enum Layer { velocity_layer = 0, friction_layer = 1, normal_layer = 2, impulse_layer = 3 };
+
+void add_arrow(render::DrawList& list, const render::Vec3f& origin, const render::Vec3f& direction,
+               const render::Colour& colour, Layer layer) {
+  if (direction.norm() > 1e-4f) list.arrows.push_back({origin, direction, colour, layer});
+}
+
+// A joint's anchor on `body` (or the fixed world point) where the body's pose puts it.
+render::Vec3f anchor_point(const std::vector<BodyPose>& poses, int body, const physics::Vec3& local) {
+  if (body < 0 || body >= int(poses.size())) return to_float(local);
+  return to_float(poses[body].position + poses[body].orientation * local);
+}
+
+void add_joints(render::DrawList& list, const std::vector<BodyPose>& poses, const std::vector<physics::Joint>& joints) {
+  for (const physics::Joint& joint : joints) {
+    const render::Vec3f a = anchor_point(poses, joint.body_a, joint.local_anchor_a);
+    const render::Vec3f b = anchor_point(poses, joint.body_b, joint.local_anchor_b);
+    if (joint.type == physics::JointType::distance)
+      list.lines.push_back({a, b, mark_colour::joint, joint.rope ? 2.0f : 3.0f});
+    else
+      list.points.push_back({a, mark_colour::joint, 5.0f});
+    // A fixed pivot also shows as a dot, so the viewer sees where the rod hangs from.
+    if (joint.body_a == physics::kWorld && joint.type == physics::JointType::distance)
+      list.points.push_back({a, mark_colour::joint, 4.0f});
+  }
+}
+
+}  // namespace
+
+std::vector<BodyPose> poses_of(const std::vector<physics::Body>& bodies) {
+  std::vector<BodyPose> poses;
+  poses.reserve(bodies.size());
+  for (const physics::Body& body : bodies) poses.push_back({body.position, body.orientation});
+  return poses;
+}
+
+void interpolate(const std::vector<BodyPose>& from, const std::vector<BodyPose>& to, double weight,
+                 std::vector<BodyPose>& out) {
+  out.resize(to.size());
+  for (size_t i = 0; i < to.size(); ++i) {
+    if (i >= from.size()) {
+      out[i] = to[i];
+      continue;
+    }
+    out[i].position = from[i].position + (to[i].position - from[i].position) * weight;
+    out[i].orientation = from[i].orientation.slerp(weight, to[i].orientation);
+  }
+}
+
+render::Vec3f impulse_on(const physics::ContactRecord& contact, int body) {
+  const double sign = body == contact.body_a ? 1.0 : -1.0;  // B gets the opposite of A's
+  return (sign * (contact.normal * contact.normal_impulse)).cast<float>();
+}
+
+render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::Body>& bodies,
+                                 const std::vector<BodyPose>& poses, const std::vector<physics::Joint>& joints,
+                                 const std::vector<physics::ContactRecord>& contacts, const ArrowScales& scales,
+                                 const render::Camera& camera) {
+  const DrawOptions& draw = scene.draw;
+  render::DrawList list;
+  list.camera = camera;
+  list.ground = false;
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    const physics::Body& body = bodies[i];
+    const BodyPose& pose = i < poses.size() ? poses[i] : BodyPose{body.position, body.orientation};
+    const render::Colour colour = i < scene.colours.size() ? to_render(scene.colours[i]) : render::Colour{};
+    const bool sleeping = draw.sleeping && !body.awake && !body.is_static();
+    switch (body.shape.type) {
+      case physics::ShapeType::sphere:
+        list.spheres.push_back({to_float(pose.position), float(body.shape.radius), pose.orientation.cast<float>(),
+                                colour, true, sleeping});
+        break;
+      case physics::ShapeType::box:
+        list.boxes.push_back({to_float(pose.position), body.shape.half_extents.cast<float>(),
+                              pose.orientation.cast<float>(), colour, sleeping});
+        break;
+      case physics::ShapeType::plane:
+        // The renderer draws one ground; a horizontal plane becomes it.
+        if (body.shape.normal.y() > 0.999) {
+          list.ground = true;
+          list.ground_height = float(body.shape.offset);
+        }
+        break;
+    }
+    if (draw.velocities && !body.is_static())
+      add_arrow(list, to_float(pose.position), to_float(body.velocity) * float(scales.velocity), mark_colour::velocity, velocity_layer);
+  }
+
+  add_joints(list, poses, joints);
+  for (const physics::ContactRecord& contact : contacts) {
+    const render::Vec3f point = to_float(contact.point);
+    if (draw.contact_normals)
+      add_arrow(list, point, to_float(contact.normal) * float(scales.normal_length), mark_colour::contact_normal, normal_layer);
+    for (int body : {contact.body_a, contact.body_b}) {
+      if (!moves(bodies, body)) continue;
+      const float sign = body == contact.body_a ? 1.0f : -1.0f;
+      if (draw.impulses)
+        add_arrow(list, point, impulse_on(contact, body) * float(scales.impulse), mark_colour::normal_impulse, impulse_layer);
+      if (draw.friction)
+        add_arrow(list, point, sign * to_float(contact.tangent_impulse) * float(scales.impulse),
+                  mark_colour::friction_impulse, friction_layer);
+    }
+    if (draw.contact_points) list.points.push_back({point, mark_colour::contact_point, 4.0f});
+  }
+  return list;
+}
+
+}  // namespace impulse::demos

@@ -1,0 +1,15 @@
+// What a whole run of a world shows, known only at its end (world_take.h): it fixes the arrow
+// scales, the plots' axes and the slow motion before the first frame is drawn.
+#pragma once
+#include <vector>
+
+namespace impulse::demos {
+
+struct TakeSummary {
+  std::vector<double> impact_times;  // s: steps with a contact impulse >= slow_motion_impulse
+  double largest_impulse = 0;        // N s, normal or friction, on a moving body
+  double largest_speed = 0;          // m/s of a moving body
+  std::vector<double> plot_maxima;   // one per scene.overlay.plots
+};
+
+}  // namespace impulse::demos

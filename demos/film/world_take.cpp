@@ -1,0 +1,108 @@
+#include "demos/film/world_take.h"
+
+#include "demos/film/frame_overlay.h"
+#include "demos/scene/scene_world.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace impulse::demos {
+namespace {
+
+// Slow motion, automatic arrow scales, plots and the impulse label (which skips impulses
+// negligible beside the largest) read the summary; without them it stays empty.
+bool needs_summary(const Scene& scene) {
+  const DrawOptions& draw = scene.draw;
+  const bool auto_impulse = (draw.impulses || draw.friction) && draw.impulse_scale <= 0;
+  const bool auto_velocity = draw.velocities && draw.velocity_scale <= 0;
+  return scene.playback.slow_motion_impulse > 0 || auto_impulse || auto_velocity || !scene.overlay.plots.empty() ||
+         scene.overlay.label == "impulse";
+}
+
+}  // namespace
+
+WorldTake::WorldTake(const Scene& scene)
+    : scene_(scene),
+      world_(build_world(scene)),
+      bodies_(world_.bodies()),
+      contacts_drawn_(scene.draw.contact_points || scene.draw.contact_normals || scene.draw.impulses ||
+                      scene.draw.friction),
+      plots_(scene.overlay.plots, plotted_body(bodies_, scene.overlay.plot_body)),
+      hold_(scene.draw.contact_hold),
+      before_(poses_of(bodies_)),
+      after_(before_) {
+  for (const physics::Body& body : bodies_) {
+    velocities_.push_back(body.velocity);
+    awake_.push_back(body.awake);
+  }
+}
+
+bool WorldTake::finished() const { return !(world_.time() < scene_.duration + 0.5 * scene_.world.time_step); }
+
+void WorldTake::step() {
+  world_.step();
+  const physics::StepRecord& record = world_.record();
+  const auto& bodies = world_.bodies();
+  if (needs_summary(scene_)) {
+    const double threshold = scene_.playback.slow_motion_impulse;
+    bool impact = false;
+    for (const physics::ContactRecord& contact : record.contacts) {
+      const bool moving = (contact.body_a >= 0 && !bodies[contact.body_a].is_static()) ||
+                          (contact.body_b >= 0 && !bodies[contact.body_b].is_static());
+      if (!moving) continue;
+      summary_.largest_impulse = std::max(
+          {summary_.largest_impulse, double(contact.normal_impulse), double(contact.tangent_impulse.norm())});
+      if (threshold > 0 && contact.normal_impulse >= threshold) impact = true;
+    }
+    if (impact) summary_.impact_times.push_back(record.time);
+    for (const physics::Body& body : bodies)
+      if (!body.is_static()) summary_.largest_speed = std::max(summary_.largest_speed, double(body.velocity.norm()));
+  }
+  plots_.add_step(record, bodies);
+  if (needs_summary(scene_)) summary_.plot_maxima = plots_.maxima();
+
+  Step& kept = pending_.emplace_back();
+  kept.time = record.time;
+  kept.poses = poses_of(bodies);
+  for (const physics::Body& body : bodies) {
+    kept.velocities.push_back(body.velocity);
+    kept.awake.push_back(body.awake);
+  }
+  kept.contacts = record.contacts;
+}
+
+void WorldTake::sample(double time, double video_time, FrameSample& sample) {
+  // The steps until the world is at or past this frame's moment; the bodies are drawn in between.
+  while (taken_time_ < time - 1e-9) {
+    if (pending_.empty()) throw std::logic_error("WorldTake::sample: the frame is past the world's last step");
+    Step& step = pending_.front();
+    before_.swap(after_);
+    after_ = std::move(step.poses);
+    velocities_ = std::move(step.velocities);
+    awake_ = std::move(step.awake);
+    hold_.add_step(step.contacts, video_time);
+    taken_time_ = step.time;
+    ++steps_taken_;
+    pending_.pop_front();
+  }
+  const double weight =
+      steps_taken_ == 0 ? 1.0 : std::clamp(1.0 - (taken_time_ - time) / scene_.world.time_step, 0.0, 1.0);
+  interpolate(before_, after_, weight, sample.poses);
+  sample.velocities = velocities_;
+  sample.awake = awake_;
+  sample.contacts = hold_.shown(video_time);
+  if (!contacts_drawn_) keep_label_candidate(sample.contacts);
+  sample.plotted_steps = steps_taken_;
+}
+
+// Without marks, a frame's contacts matter only to the impulse label: keep the one it would write.
+void WorldTake::keep_label_candidate(std::vector<physics::ContactRecord>& contacts) const {
+  const LabelledImpulse labelled =
+      scene_.overlay.label == "impulse" ? labelled_impulse(contacts, bodies_, label_body(scene_)) : LabelledImpulse{};
+  // A new vector, not the held contacts' capacity: frames are kept until the run ends.
+  std::vector<physics::ContactRecord> kept;
+  if (labelled.contact != nullptr) kept.push_back(*labelled.contact);
+  contacts.swap(kept);
+}
+
+}  // namespace impulse::demos

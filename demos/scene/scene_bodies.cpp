@@ -1,0 +1,134 @@
+// [world], [[body]] and [[joint]]: what the physics simulates.
+#include "demos/scene/scene_sections.h"
+
+#include <cmath>
+#include <iterator>
+#include <numbers>
+#include <stdexcept>
+
+namespace impulse::demos {
+
+namespace {
+
+using physics::Real;
+using physics::Vec3;
+
+// Degrees about x, then y, then z (each about the world axis).
+physics::Quat rotation_from_degrees(const Vec3& degrees) {
+  const Vec3 r = degrees * (std::numbers::pi / 180);
+  using Turn = Eigen::AngleAxis<Real>;
+  return physics::Quat(Turn(r.z(), Vec3::UnitZ()) * Turn(r.y(), Vec3::UnitY()) * Turn(r.x(), Vec3::UnitX()));
+}
+
+// Appends a body after the engine's own checks, reported at the table's line.
+void add_body(TableReader& r, const physics::BodyDef& def, Colour colour, Scene& scene) {
+  try {
+    physics::make_body(def);
+  } catch (const std::invalid_argument& error) {
+    r.fail(nullptr, "", error.what());
+  }
+  scene.bodies.push_back(def);
+  scene.colours.push_back(colour);
+}
+
+void read_body(const toml::table& table, const std::string& path, int index, Scene& scene) {
+  physics::BodyDef def;
+  def.name = "body " + std::to_string(index + 1);
+  if (auto name = table.get_as<std::string>("name")) def.name = name->get();
+  TableReader r(table, path, "[[body]] '" + def.name + "'");
+  r.get("name");
+  const std::string shape = r.choice("shape", "", {"sphere", "box", "plane"});
+  if (shape == "sphere") {
+    def.shape = physics::Shape::sphere(r.number("radius", 0.5, 0, INFINITY, true));
+  } else if (shape == "box") {
+    const Vec3 size = r.vec3("size", Vec3(1, 1, 1));
+    if (!(size.minCoeff() > 0)) r.fail(r.get("size"), "size", "every edge must be > 0 (metres: [x, y, z])");
+    def.shape = physics::Shape::box(size / 2);
+  } else if (shape == "plane") {
+    const Vec3 normal = r.vec3("normal", Vec3::UnitY());
+    if (normal.norm() < 1e-9) r.fail(r.get("normal"), "normal", "must not be the zero vector");
+    def.shape = physics::Shape::plane(normal.normalized(), r.number("offset", 0));
+    def.is_static = true;
+  }
+  def.is_static = r.boolean("static", def.is_static);
+  if (shape == "plane" && !def.is_static) r.fail(r.get("static"), "static", "a plane is always static");
+  def.mass = r.number("mass", 0, 0, INFINITY, true);  // 0: from density
+  def.density = r.number("density", def.density, 0, INFINITY, true);
+  def.material.restitution = r.number("restitution", def.material.restitution, 0, 1);
+  def.material.friction = r.number("friction", def.material.friction, 0);
+  def.position = r.vec3("position", def.position);
+  def.orientation = rotation_from_degrees(r.vec3("rotation", Vec3::Zero()));
+  def.velocity = r.vec3("velocity", def.velocity);
+  def.angular_velocity = r.vec3("angular_velocity", def.angular_velocity);
+  const Colour colour = r.colour("colour", kBodyPalette[index % std::size(kBodyPalette)]);
+  r.finish();
+  add_body(r, def, colour, scene);
+}
+
+int body_index(TableReader& r, const Scene& scene, std::string_view key) {
+  const std::string name = r.string(key, "world");
+  if (name == "world") return physics::kWorld;
+  if (const int index = find_body(scene, name); index >= 0) return index;
+  r.fail(r.get(key), key, "no body is named '" + name + "' (give a [[body]] that name, or say \"world\")");
+}
+
+}  // namespace
+
+void read_world(TableReader& top, Scene& scene) {
+  const toml::table* t = top.table("world");
+  if (!t) return;
+  TableReader r(*t, scene.path, "[world]");
+  auto& w = scene.world;
+  w.gravity = r.vec3("gravity", w.gravity);
+  w.time_step = 1 / r.number("step_rate", 1 / w.time_step, 1, 100000);
+  w.substeps = r.integer("substeps", w.substeps, 1, 64);
+  w.min_substeps = r.integer("min_substeps", w.min_substeps, 1, 64);
+  w.stack_sink = r.number("stack_sink", w.stack_sink, 0, 1);
+  w.method = *physics::method_from_name(r.choice("method", "impulse", physics::method_names()));
+  w.contact.friction = r.boolean("friction", w.contact.friction);
+  w.contact.restitution_threshold = r.number("restitution_threshold", w.contact.restitution_threshold, 0);
+  w.contact.contact_hertz = r.number("contact_hertz", w.contact.contact_hertz, 0, 10000, true);
+  w.sleep.enabled = r.boolean("sleeping", w.sleep.enabled);
+  w.penalty.hertz = r.number("penalty_hertz", w.penalty.hertz, 0, 10000, true);
+  w.penalty.damping_ratio = r.number("penalty_damping_ratio", w.penalty.damping_ratio, 0);
+  r.finish();
+}
+
+void read_bodies(TableReader& top, Scene& scene) {
+  const toml::array* bodies = top.table_list("body");
+  if (!bodies) return;
+  for (size_t i = 0; i < bodies->size(); ++i) read_body(*bodies->get(i)->as_table(), scene.path, int(i), scene);
+}
+
+void read_joints(TableReader& top, Scene& scene) {
+  const toml::array* joints = top.table_list("joint");
+  if (!joints) return;
+  for (size_t i = 0; i < joints->size(); ++i) {
+    const toml::table& table = *joints->get(i)->as_table();
+    physics::JointDef def;
+    def.name = "joint " + std::to_string(i + 1);
+    if (auto name = table.get_as<std::string>("name")) def.name = name->get();
+    TableReader r(table, scene.path, "[[joint]] '" + def.name + "'");
+    r.get("name");
+    const std::string type = r.choice("type", "", {"ball", "hinge", "rod", "rope"});
+    def.body_a = body_index(r, scene, "a");
+    def.body_b = body_index(r, scene, "b");
+    if (def.body_a == def.body_b) r.fail(r.get("b"), "b", "a joint joins two different bodies");
+    if (type == "ball" || type == "hinge") {
+      def.type = type == "ball" ? physics::JointType::ball : physics::JointType::hinge;
+      def.anchor = r.vec3("anchor", Vec3::Zero());
+      if (type == "hinge") def.axis = r.vec3("axis", Vec3::UnitZ());
+    } else {
+      def.type = physics::JointType::distance;
+      def.rope = type == "rope";
+      auto centre = [&](int body) { return body == physics::kWorld ? Vec3::Zero() : scene.bodies[body].position; };
+      def.anchor_a = r.vec3("anchor_a", centre(def.body_a));
+      def.anchor_b = r.vec3("anchor_b", centre(def.body_b));
+      def.length = r.number("length", 0, 0);  // 0: the distance between the anchors
+    }
+    r.finish();
+    scene.joints.push_back(def);
+  }
+}
+
+}  // namespace impulse::demos

@@ -1,0 +1,55 @@
+// Scene files (TOML): the world, its bodies, the camera and the video, as a lecturer writes them.
+// The format is described in README.md, "Scene files".
+#pragma once
+#include "demos/scene/view_options.h"
+#include "physics/world.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace impulse::demos {
+
+// A scene file that cannot be used. what() reads "FILE:LINE: FIELD: REASON".
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// [draw]: the physics made visible, each switchable (colours: demos/README.md, "What a frame shows").
+struct DrawOptions {
+  bool contact_points = true;    // a dot at each contact point
+  bool contact_normals = true;   // an arrow along each contact's normal while it lasts
+  float normal_length = 0.0f;    // m; 0: 1.5 times the smallest moving body's radius or half-size
+  bool impulses = true;          // the normal impulse on each moving body, as an arrow
+  bool friction = true;          // the friction (tangential) impulse, as an arrow
+  float impulse_scale = 0.0f;    // m of arrow per N s; 0: chosen so the largest impulse is about 1.5 m
+  float contact_hold = 0.4f;     // s of video a contact stays drawn after its step (impacts last one step)
+  bool velocities = false;       // each moving body's velocity, as an arrow from its centre
+  float velocity_scale = 0.0f;   // m of arrow per m/s; 0: chosen so the fastest body's is about 1.5 m
+  bool sleeping = true;          // sleeping bodies pale and hatched
+};
+
+struct Scene {
+  std::string path;
+  std::string title;
+  double duration = 5;           // s of simulated time
+  physics::WorldSettings world;
+  std::vector<physics::BodyDef> bodies;
+  std::vector<Colour> colours;  // one per body
+  std::vector<physics::JointDef> joints;  // body indices into `bodies`
+  CameraSetting camera;
+  CameraMotion camera_motion;
+  VideoSetting video;
+  DrawOptions draw;
+  OverlayOptions overlay;
+  std::vector<CaptionCue> captions;
+  PlaybackOptions playback;
+};
+
+Scene load_scene(const std::string& path);
+
+// The index of the first body named `name` in scene.bodies, -1 if none is.
+int find_body(const Scene& scene, std::string_view name);
+
+}  // namespace impulse::demos

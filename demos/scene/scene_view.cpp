@@ -1,0 +1,163 @@
+// [camera] (with follow and [[camera.keyframe]]), [video], [draw], [overlay], [[caption]] and
+// [playback]: what the video shows and how it is encoded.
+#include "demos/scene/scene_sections.h"
+#include "demos/scene/video_quality.h"
+
+#include <algorithm>
+
+namespace impulse::demos {
+
+namespace {
+
+// A field naming a body: empty, or the name of one (checked here, at the field's own line).
+std::string body_name(TableReader& r, std::string_view key, const Scene& scene) {
+  const std::string name = r.string(key, "");
+  if (name.empty() || find_body(scene, name) >= 0) return name;
+  std::string known;
+  for (const physics::BodyDef& body : scene.bodies) known += (known.empty() ? "'" : ", '") + body.name + "'";
+  r.fail(r.get(key), key, "no body is named '" + name + "' (bodies: " + known + ")");
+}
+
+CameraSetting read_camera_fields(TableReader& r, CameraSetting camera) {
+  camera.position = r.vec3("position", camera.position.cast<physics::Real>()).cast<float>();
+  camera.target = r.vec3("target", camera.target.cast<physics::Real>()).cast<float>();
+  camera.fov_y_degrees = float(r.number("fov", camera.fov_y_degrees, 1, 170));
+  if ((camera.position - camera.target).norm() < 1e-6f) r.fail(r.get("target"), "target", "must differ from position");
+  return camera;
+}
+
+void read_camera(TableReader& top, Scene& scene) {
+  const toml::table* t = top.table("camera");
+  if (!t) return;
+  const std::string& path = scene.path;
+  TableReader r(*t, path, "[camera]");
+  scene.camera = read_camera_fields(r, scene.camera);
+  scene.camera_motion.follow = body_name(r, "follow", scene);
+  if (const toml::node* node = r.get("keyframe")) {
+    const toml::array* keyframes = node->as_array();
+    if (!keyframes || !keyframes->is_array_of_tables())
+      r.fail(node, "keyframe", "must be a list of [[camera.keyframe]] tables");
+    CameraSetting previous = scene.camera;
+    double previous_time = 0;
+    for (const toml::node& item : *keyframes) {
+      TableReader k(*item.as_table(), path, "[[camera.keyframe]]");
+      CameraKeyframe keyframe;
+      keyframe.time = k.number("time", -1, 0, 3600, true);
+      if (keyframe.time < 0) k.fail(nullptr, "time", "missing: when (s) the camera is there");
+      if (keyframe.time <= previous_time)
+        k.fail(k.get("time"), "time", "keyframes must come in increasing time, after 0 (the [camera] fields)");
+      keyframe.camera = read_camera_fields(k, previous);  // unset fields keep the previous keyframe's
+      k.finish();
+      scene.camera_motion.keyframes.push_back(keyframe);
+      previous = keyframe.camera;
+      previous_time = keyframe.time;
+    }
+  }
+  if (!scene.camera_motion.follow.empty() && !scene.camera_motion.keyframes.empty())
+    r.fail(r.get("follow"), "follow", "use either follow or [[camera.keyframe]], not both");
+  r.finish();
+}
+
+void read_video(TableReader& top, Scene& scene) {
+  const toml::table* t = top.table("video");
+  if (!t) return;
+  TableReader r(*t, scene.path, "[video]");
+  auto& v = scene.video;
+  const std::string quality = r.choice("quality", "medium", {"low", "medium", "high"});
+  v = *quality_preset(quality);
+  v.width = r.integer("width", v.width, 16, 7680);
+  v.height = r.integer("height", v.height, 16, 4320);
+  if (v.width % 2 || v.height % 2) r.fail(r.get("width"), "width", "width and height must be even (yuv420p)");
+  v.fps = r.integer("fps", v.fps, 1, 240);
+  v.crf = r.integer("crf", v.crf, 0, 51);
+  v.preset = r.choice("x264_preset", v.preset,
+                      {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"});
+  r.finish();
+}
+
+void read_draw(TableReader& top, Scene& scene) {
+  const toml::table* t = top.table("draw");
+  if (!t) return;
+  TableReader r(*t, scene.path, "[draw]");
+  DrawOptions& d = scene.draw;
+  d.contact_points = r.boolean("contact_points", d.contact_points);
+  d.contact_normals = r.boolean("contact_normals", d.contact_normals);
+  d.normal_length = float(r.number("normal_length", d.normal_length, 0, 100, true));
+  d.impulses = r.boolean("impulses", d.impulses);
+  d.friction = r.boolean("friction", d.friction);
+  d.impulse_scale = float(r.number("impulse_scale", d.impulse_scale, 0, 1e6));
+  d.contact_hold = float(r.number("contact_hold", d.contact_hold, 0, 10));
+  d.velocities = r.boolean("velocities", d.velocities);
+  d.velocity_scale = float(r.number("velocity_scale", d.velocity_scale, 0, 1e6));
+  d.sleeping = r.boolean("sleeping", d.sleeping);
+  r.finish();
+}
+
+void read_overlay(TableReader& top, Scene& scene) {
+  const toml::table* t = top.table("overlay");
+  if (!t) return;
+  TableReader r(*t, scene.path, "[overlay]");
+  OverlayOptions& o = scene.overlay;
+  o.title = r.boolean("title", o.title);
+  o.clock = r.boolean("clock", o.clock);
+  o.legend = r.boolean("legend", o.legend);
+  if (const toml::node* node = r.get("plots")) {
+    const char* expected = "must be a list of plot names, like [\"kinetic_energy\", \"momentum\", \"speed\"]";
+    const toml::array* plots = node->as_array();
+    if (!plots) r.fail(node, "plots", expected);
+    o.plots.clear();
+    for (const toml::node& item : *plots) {
+      const auto name = item.value_exact<std::string>();
+      if (!name) r.fail(node, "plots", expected);
+      if (*name == "kinetic_energy") o.plots.push_back(PlotKind::kinetic_energy);
+      else if (*name == "momentum") o.plots.push_back(PlotKind::momentum);
+      else if (*name == "speed") o.plots.push_back(PlotKind::speed);
+      else r.fail(node, "plots", "unknown plot '" + *name + "' (known: kinetic_energy, momentum, speed)");
+    }
+  }
+  o.plot_body = body_name(r, "plot_body", scene);
+  o.label = r.choice("label", o.label, {"impulse", "velocity", "none"});
+  o.label_body = body_name(r, "label_body", scene);
+  r.finish();
+}
+
+void read_captions(TableReader& top, Scene& scene) {
+  const toml::array* captions = top.table_list("caption");
+  if (!captions) return;
+  for (const toml::node& item : *captions) {
+    TableReader r(*item.as_table(), scene.path, "[[caption]]");
+    CaptionCue cue;
+    cue.text = r.string("text", "");
+    if (cue.text.empty()) r.fail(r.get("text"), "text", "missing: the caption's words, in quotes");
+    cue.start = r.number("start", 0, 0);
+    cue.end = r.number("end", scene.duration, 0);
+    if (cue.end <= cue.start) r.fail(r.get("end"), "end", "must come after start");
+    r.finish();
+    scene.captions.push_back(cue);
+  }
+}
+
+void read_playback(TableReader& top, Scene& scene) {
+  const toml::table* t = top.table("playback");
+  if (!t) return;
+  TableReader r(*t, scene.path, "[playback]");
+  PlaybackOptions& p = scene.playback;
+  p.speed = r.number("speed", p.speed, 0.01, 100);
+  p.slow_motion_impulse = r.number("slow_motion_impulse", p.slow_motion_impulse, 0);
+  p.slow_motion_speed = r.number("slow_motion_speed", p.slow_motion_speed, 0.01, 1);
+  p.slow_motion_window = r.number("slow_motion_window", p.slow_motion_window, 0, 10, true);
+  r.finish();
+}
+
+}  // namespace
+
+void read_view(TableReader& top, Scene& scene) {
+  read_camera(top, scene);
+  read_video(top, scene);
+  read_draw(top, scene);
+  read_overlay(top, scene);
+  read_captions(top, scene);
+  read_playback(top, scene);
+}
+
+}  // namespace impulse::demos

@@ -1,0 +1,134 @@
+#include "demos/scene/table_reader.h"
+
+#include "demos/scene/scene_file.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace impulse::demos {
+
+TableReader::TableReader(const toml::table& table, std::string file, std::string where)
+    : table_(table), file_(std::move(file)), where_(std::move(where)) {}
+
+void TableReader::fail(const toml::node* node, std::string_view key, const std::string& reason) const {
+  const auto& source = node ? node->source() : table_.source();
+  std::ostringstream message;
+  message << file_ << ':' << source.begin.line << ": " << where_;
+  if (!key.empty()) message << " field '" << key << "'";
+  message << ": " << reason;
+  throw SceneError(message.str());
+}
+
+const toml::node* TableReader::get(std::string_view key) {
+  used_.insert(std::string(key));
+  return table_.get(key);
+}
+
+double TableReader::number(std::string_view key, double fallback, double min, double max, bool exclusive_min) {
+  const toml::node* node = get(key);
+  if (!node) return fallback;
+  double value = 0;
+  if (auto v = node->value_exact<double>()) value = *v;
+  else if (auto i = node->value_exact<int64_t>()) value = double(*i);
+  else fail(node, key, "must be a number");
+  if (!std::isfinite(value)) fail(node, key, "must be finite");
+  const bool too_small = exclusive_min ? value <= min : value < min;
+  if (too_small || value > max) {
+    std::ostringstream range;
+    range << "must be " << (exclusive_min ? "> " : ">= ") << min;
+    if (std::isfinite(max)) range << " and <= " << max;
+    range << ", got " << value;
+    fail(node, key, range.str());
+  }
+  return value;
+}
+
+int TableReader::integer(std::string_view key, int fallback, int min, int max) {
+  const toml::node* node = get(key);
+  if (!node) return fallback;
+  auto v = node->value_exact<int64_t>();
+  if (!v) fail(node, key, "must be a whole number");
+  if (*v < min || *v > max)
+    fail(node, key, "must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " + std::to_string(*v));
+  return int(*v);
+}
+
+bool TableReader::boolean(std::string_view key, bool fallback) {
+  const toml::node* node = get(key);
+  if (!node) return fallback;
+  auto v = node->value_exact<bool>();
+  if (!v) fail(node, key, "must be true or false");
+  return *v;
+}
+
+std::string TableReader::string(std::string_view key, std::string fallback) {
+  const toml::node* node = get(key);
+  if (!node) return fallback;
+  auto v = node->value_exact<std::string>();
+  if (!v) fail(node, key, "must be a string in quotes");
+  return *v;
+}
+
+std::string TableReader::choice(std::string_view key, std::string fallback, std::span<const std::string_view> choices) {
+  const std::string value = string(key, fallback);
+  std::string known;
+  for (std::string_view c : choices) {
+    if (c == value) return value;
+    known += (known.empty() ? "" : ", ") + std::string(c);
+  }
+  const toml::node* node = get(key);
+  fail(node, key, node ? "unknown value '" + value + "' (known: " + known + ")" : "missing (one of: " + known + ")");
+}
+
+physics::Vec3 TableReader::vec3(std::string_view key, const physics::Vec3& fallback) {
+  const toml::node* node = get(key);
+  if (!node) return fallback;
+  const toml::array* array = node->as_array();
+  const char* expected = "must be an array of three numbers, like [0, 1, 0]";
+  if (!array || array->size() != 3) fail(node, key, expected);
+  physics::Vec3 v;
+  for (int i = 0; i < 3; ++i) {
+    const toml::node& item = *array->get(i);
+    if (auto d = item.value_exact<double>()) v[i] = *d;
+    else if (auto n = item.value_exact<int64_t>()) v[i] = physics::Real(*n);
+    else fail(node, key, expected);
+    if (!std::isfinite(v[i])) fail(node, key, "must be finite");
+  }
+  return v;
+}
+
+Colour TableReader::colour(std::string_view key, Colour fallback) {
+  const toml::node* node = get(key);
+  if (!node) return fallback;
+  auto text = node->value_exact<std::string>();
+  unsigned rgb = 0;
+  if (!text || text->size() != 7 || (*text)[0] != '#' || std::sscanf(text->c_str() + 1, "%6x", &rgb) != 1)
+    fail(node, key, "must be a colour like \"#e69f00\"");
+  return {float((rgb >> 16) & 255) / 255, float((rgb >> 8) & 255) / 255, float(rgb & 255) / 255};
+}
+
+const toml::table* TableReader::table(std::string_view key) {
+  const toml::node* node = get(key);
+  if (!node) return nullptr;
+  if (!node->is_table()) fail(node, key, "must be a table, like [" + std::string(key) + "]");
+  return node->as_table();
+}
+
+const toml::array* TableReader::table_list(std::string_view key) {
+  const toml::node* node = get(key);
+  if (!node) return nullptr;
+  const toml::array* list = node->as_array();
+  if (!list || !list->is_array_of_tables()) fail(node, key, "must be a list of [[" + std::string(key) + "]] tables");
+  return list;
+}
+
+void TableReader::finish() const {
+  for (const auto& [key, node] : table_) {
+    if (used_.count(key.str())) continue;
+    std::string known;
+    for (const auto& k : used_) known += (known.empty() ? "" : ", ") + k;
+    fail(&node, key.str(), "unknown field (known here: " + known + ")");
+  }
+}
+
+}  // namespace impulse::demos

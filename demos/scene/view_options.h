@@ -1,0 +1,71 @@
+// What a scene file asks the video to show beyond the bodies (README.md, "Scene files"):
+// captions with time cues, the 2D overlay, camera motion, playback speed and slow motion.
+#pragma once
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace impulse::demos {
+
+using Vec3f = Eigen::Vector3f;
+
+struct Colour { float r = 0.8f, g = 0.8f, b = 0.8f; };  // sRGB, 0..1
+
+// [camera]: where the eye is, what it looks at, and its vertical field of view.
+struct CameraSetting {
+  Vec3f position{0.0f, 3.0f, 10.0f};
+  Vec3f target{0.0f, 1.0f, 0.0f};
+  float fov_y_degrees = 45.0f;
+};
+
+// [video]: the frame's size and rate, and how the encoder trades quality for size and speed.
+struct VideoSetting {
+  int width = 1280;   // even
+  int height = 720;   // even
+  int fps = 30;
+  int crf = 20;       // x264 constant rate factor: 0 lossless .. 51 worst
+  std::string preset = "superfast";  // x264's speed preset
+};
+
+// [[caption]]: a line shown from `start` to `end` seconds of simulated time.
+struct CaptionCue {
+  std::string text;
+  double start = 0;
+  double end = 1e9;
+};
+
+enum class PlotKind { kinetic_energy, momentum, speed };
+
+// [overlay]
+struct OverlayOptions {
+  bool title = true;             // the scene's title, top left
+  bool clock = true;             // simulated time and playback speed, top right
+  bool legend = true;            // what each arrow colour means, and its scale
+  std::vector<PlotKind> plots;   // live plots down the right side
+  std::string plot_body;         // whose speed the "speed" plot shows (default: the first moving body)
+  std::string label = "impulse"; // the arrow that gets its value written beside it: impulse, velocity, none
+  std::string label_body;        // on which body (default: whichever has the largest)
+};
+
+// [[camera.keyframe]]: where the camera is at `time` s; it eases between keyframes.
+struct CameraKeyframe {
+  double time = 0;
+  CameraSetting camera;
+};
+
+// [camera] follow / keyframes
+struct CameraMotion {
+  std::string follow;                   // a body's name: the camera keeps its offset from it
+  std::vector<CameraKeyframe> keyframes;  // sorted by time; the [camera] fields are the one at t = 0
+};
+
+// [playback]
+struct PlaybackOptions {
+  double speed = 1.0;                // video seconds per simulated second is 1 / speed
+  double slow_motion_impulse = 0.0;  // N s: a contact impulse above this slows playback; 0: never
+  double slow_motion_speed = 0.2;    // the playback factor around such an impact
+  double slow_motion_window = 0.25;  // s of simulated time before and after the impact
+};
+
+}  // namespace impulse::demos

@@ -1,0 +1,112 @@
+// Captions in whole scenes: where and when a [[caption]] appears in the frames, and how it fades.
+#include "demos/film/captions.h"
+#include "demos/film/render_scene.h"
+#include "demos/scene/scene_file.h"
+#include "render/png_io.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace impulse {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kWidth = 320;
+constexpr int kHeight = 240;
+
+int luminance(const render::Frame& frame, int x, int y) {
+  const uint8_t* p = &frame.rgba[(size_t(y) * frame.width + x) * 4];
+  return (2126 * p[0] + 7152 * p[1] + 722 * p[2]) / 10000;
+}
+
+// Dark pixels (the caption's box) in the bottom band where captions sit, and bright ones (its
+// letters) between a row's first and last dark pixel.
+struct CaptionPixels {
+  int dark = 0;
+  int bright = 0;
+};
+CaptionPixels caption_band(const render::Frame& frame) {
+  CaptionPixels pixels;
+  for (int y = kHeight * 3 / 4; y < kHeight; ++y) {
+    int first = -1, last = -1;
+    for (int x = kWidth / 5; x < kWidth * 4 / 5; ++x) {
+      if (luminance(frame, x, y) < 70) {
+        ++pixels.dark;
+        if (first < 0) first = x;
+        last = x;
+      }
+    }
+    for (int x = first + 1; first >= 0 && x < last; ++x)
+      if (luminance(frame, x, y) > 150) ++pixels.bright;
+  }
+  return pixels;
+}
+
+// Frames at 10 per second; the caption is on from 0.4 s to 0.8 s of simulated time.
+TEST(Overlay, CaptionAppearsWhereItIsPlacedOnlyDuringItsCue) {
+  const fs::path dir = fs::temp_directory_path() / "impulse_overlay_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "caption.toml") << R"(
+[scene]
+duration = 1.2
+[camera]
+position = [0, 1.5, 5]
+target = [0, 0.5, 0]
+[video]
+width = 320
+height = 240
+fps = 10
+[overlay]
+clock = false
+legend = false
+[[caption]]
+text = "Momentum is kept"
+start = 0.4
+end = 0.8
+[[body]]
+shape = "plane"
+[[body]]
+shape = "sphere"
+radius = 0.3
+position = [0, 0.3, -2]
+)";
+  const demos::Scene scene = demos::load_scene((dir / "caption.toml").string());
+  demos::RenderOptions options;
+  options.png_directory = (dir / "frames").string();
+  demos::render_scene(scene, options);
+
+  for (int frame = 0; frame < 12; ++frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", frame);
+    const render::Frame image = render::read_png((dir / "frames" / name).string());
+    const CaptionPixels pixels = caption_band(image);
+    const double time = frame / 10.0;
+    if (time >= 0.5 && time <= 0.7) {  // fully faded in
+      EXPECT_GT(pixels.dark, 800) << "t = " << time << ": the caption's box";
+      EXPECT_GT(pixels.bright, 20) << "t = " << time << ": the caption's letters";
+    } else if (time < 0.4 || time >= 0.8) {
+      EXPECT_EQ(pixels.dark, 0) << "t = " << time << ": no caption outside its cue";
+      EXPECT_EQ(pixels.bright, 0) << "t = " << time;
+    }
+  }
+}
+
+TEST(Overlay, CaptionsFadeInsideTheirCue) {
+  const std::vector<demos::CaptionCue> cues = {{"a", 1.0, 2.0}, {"b", 1.5, 3.0}};
+  EXPECT_TRUE(demos::captions_at(cues, 0.99).empty());
+  ASSERT_EQ(demos::captions_at(cues, 1.0).size(), 1u);
+  EXPECT_GT(demos::captions_at(cues, 1.0)[0].opacity, 0.0f);
+  EXPECT_FLOAT_EQ(demos::captions_at(cues, 1.3)[0].opacity, 1.0f);
+  EXPECT_EQ(demos::captions_at(cues, 1.7).size(), 2u);
+  ASSERT_EQ(demos::captions_at(cues, 2.0).size(), 1u);
+  EXPECT_EQ(demos::captions_at(cues, 2.0)[0].text, "b");
+}
+
+// The layer changes only the pixels it paints: everything outside its panels stays byte-exact,
+// and cairo's premultiplied BGRA lands as the right colour in the RGBA frame.
+}  // namespace
+}  // namespace impulse

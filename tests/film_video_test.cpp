@@ -1,0 +1,153 @@
+// The MP4 as a viewer gets it, decoded back through libavcodec: frame count, size and frame
+// rate, the colours where a known body and the background are, and an impulse arrow where the
+// contact is. Scenes are small (320x240, one second) to keep CI short.
+#include "demos/film/render_scene.h"
+#include "demos/scene/scene_file.h"
+#include "render/camera_view.h"
+#include "render/png_io.h"
+#include "tests/video_decode.h"
+
+#include "demos/film/render_types.h"
+#include "tests/scene_scratch.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace impulse {
+namespace {
+
+namespace fs = std::filesystem;
+
+using testing::pixel;
+using testing::Rgb;
+
+fs::path scratch(const std::string& name) { return testing::scratch("film_video_test", name); }
+demos::Scene scene_from(const fs::path& dir, const std::string& text) { return testing::scene_from(dir, text); }
+Rgb pixel(const render::Frame& frame, const Eigen::Vector2f& at) { return pixel(frame, int(at.x()), int(at.y())); }
+
+// A 1 kg ball resting on the ground; its contact is at the origin. Without marks, unless the
+// test adds a [draw] table.
+std::string resting_ball(const std::string& draw) {
+  return R"(
+[scene]
+duration = 1.0
+[camera]
+position = [0, 1.2, 5]
+target = [0, 0.6, 0]
+[video]
+width = 320
+height = 240
+fps = 30
+[overlay]
+clock = false
+legend = false
+)" + draw + R"(
+[[body]]
+shape = "plane"
+[[body]]
+name = "ball"
+shape = "sphere"
+radius = 0.5
+mass = 1.0
+position = [0, 0.5, 0]
+colour = "#e69f00"
+)";
+}
+
+constexpr const char* kNoMarks = R"(
+[draw]
+contact_points = false
+contact_normals = false
+impulses = false
+friction = false
+sleeping = false
+)";
+
+TEST(RenderVideo, DecodedBackHasTheFramesSizeRateAndColours) {
+  const fs::path dir = scratch("decode");
+  const demos::Scene scene = scene_from(dir, resting_ball(kNoMarks));
+  demos::RenderOptions options;
+  options.video_path = (dir / "ball.mp4").string();
+  demos::render_scene(scene, options);
+
+  const testing::DecodedVideo video = testing::decode_video(options.video_path);
+  EXPECT_EQ(video.width, 320);
+  EXPECT_EQ(video.height, 240);
+  EXPECT_NEAR(video.fps, 30.0, 1e-6);
+  ASSERT_EQ(video.frames.size(), 30u);
+
+  const render::CameraView view = render::make_camera_view(demos::to_render(scene.camera), 320, 240);
+  const Eigen::Vector2f ball = *view.to_pixels({-0.18f, 0.72f, 0.36f});  // upper left of the ball, a light octant
+  const Eigen::Vector2f sky(6, 6);
+  for (const render::Frame& frame : {video.frames.front(), video.frames.back()}) {
+    const Rgb on_ball = pixel(frame, ball), in_sky = pixel(frame, sky);
+    EXPECT_NEAR(in_sky.r, 0.92 * 255, 12);
+    EXPECT_NEAR(in_sky.g, 0.94 * 255, 12);
+    EXPECT_NEAR(in_sky.b, 0.97 * 255, 12);
+    EXPECT_GT(on_ball.r, on_ball.b + 100) << "orange: " << on_ball.r << "," << on_ball.g << "," << on_ball.b;
+    EXPECT_GT(on_ball.r, 150);
+  }
+}
+
+// The normal impulse on the ball, drawn from the contact up: at 10 m per N s a resting step's
+// impulse (m g dt = 0.16 N s) is about 1.6 m long, so the arrow leaves the ball's top (1 m).
+TEST(RenderVideo, AnImpulseArrowStandsOnTheContact) {
+  const fs::path dir = scratch("arrow");
+  const demos::Scene scene = scene_from(dir, resting_ball(R"(
+[draw]
+contact_points = false
+contact_normals = false
+impulses = true
+impulse_scale = 10.0
+friction = false
+sleeping = false
+)"));
+  demos::RenderOptions options;
+  options.video_path = (dir / "arrow.mp4").string();
+  demos::render_scene(scene, options);
+  const testing::DecodedVideo video = testing::decode_video(options.video_path);
+  ASSERT_EQ(video.frames.size(), 30u);
+
+  const render::CameraView view = render::make_camera_view(demos::to_render(scene.camera), 320, 240);
+  const Eigen::Vector2f above_ball = *view.to_pixels({0.0f, 1.25f, 0.0f});   // on the arrow, above the ball
+  const Eigen::Vector2f beside = *view.to_pixels({0.6f, 1.25f, 0.0f});       // same height, off the arrow
+  for (size_t index : {size_t(6), size_t(20)}) {
+    const Rgb on_arrow = pixel(video.frames[index], above_ball);
+    const Rgb off_arrow = pixel(video.frames[index], beside);
+    EXPECT_GT(on_arrow.b, on_arrow.r + 90) << "frame " << index << ": blue (#0072b2) above the contact, got "
+                                           << on_arrow.r << "," << on_arrow.g << "," << on_arrow.b;
+    EXPECT_LT(off_arrow.b, off_arrow.r + 40) << "frame " << index << ": no arrow beside it";
+  }
+}
+
+TEST(RenderVideo, ChosenFramesAsPng) {
+  const fs::path dir = scratch("png");
+  const demos::Scene scene = scene_from(dir, resting_ball(kNoMarks));
+  demos::RenderOptions options;
+  options.png_directory = (dir / "frames").string();
+  options.png_frames = {0, 29};
+  demos::render_scene(scene, options);
+  EXPECT_TRUE(fs::exists(dir / "frames" / "frame_00000.png"));
+  EXPECT_TRUE(fs::exists(dir / "frames" / "frame_00029.png"));
+  EXPECT_FALSE(fs::exists(dir / "frames" / "frame_00001.png"));
+  EXPECT_EQ(render::read_png((dir / "frames" / "frame_00029.png").string()).width, 320);
+}
+
+// Slow motion stretches the video around an impact: more frames than duration x fps.
+TEST(RenderVideo, SlowMotionAroundAnImpactAddsFrames) {
+  const fs::path dir = scratch("slow");
+  std::string text = resting_ball(kNoMarks);
+  text.replace(text.find("position = [0, 0.5, 0]"), 22, "position = [0, 1.5, 0]");  // dropped 1 m
+  text += "\n[playback]\nslow_motion_impulse = 1.0\nslow_motion_speed = 0.25\n";
+  const demos::Scene scene = scene_from(dir, text);
+  demos::RenderOptions options;
+  options.video_path = (dir / "slow.mp4").string();
+  demos::render_scene(scene, options);
+  const testing::DecodedVideo video = testing::decode_video(options.video_path);
+  EXPECT_GT(video.frames.size(), 40u) << "the impact (J = 1 kg x 1.7 x 4.4 m/s) should slow playback";
+}
+
+}  // namespace
+}  // namespace impulse
