@@ -1,6 +1,7 @@
-// physics_bench: the scenes of ../shared/bench/SCENES.md in impulse and in Bullet, in one run of
-// this program, with the ratio of their median costs per step. Each engine's run of each scene is
-// a forked child, so that its peak memory (the child's ru_maxrss) is its own.
+// physics_bench: the scenes of ../shared/bench/SCENES.md in impulse and in its peers, Bullet and
+// Box3D, in one run of this program, with the ratio of impulse's median cost per step to each
+// peer's. Each engine's run of each scene is a forked child, so that its peak memory (the child's
+// ru_maxrss) is its own. A build without Box3D (tests/bench/CMakeLists.txt) says so in its rows.
 //
 //   physics_bench                 the whole table (several minutes)
 //   physics_bench --quick         every scene for a few steps (a smoke test)
@@ -35,12 +36,28 @@ namespace {
 
 using namespace impulse::bench;
 
-enum class EngineId { impulse, bullet };
-const char* engine_name(EngineId e) { return e == EngineId::impulse ? "impulse" : "Bullet"; }
+enum class EngineId { impulse, bullet, box3d };
+constexpr EngineId kEngines[] = {EngineId::impulse, EngineId::bullet, EngineId::box3d};
+constexpr EngineId kPeers[] = {EngineId::bullet, EngineId::box3d};
+const char* engine_name(EngineId e) {
+  switch (e) {
+    case EngineId::impulse: return "impulse";
+    case EngineId::bullet: return "Bullet";
+    case EngineId::box3d: return "Box3D";
+  }
+  return "?";
+}
+
+#ifdef IMPULSE_BENCH_HAVE_BOX3D
+constexpr bool kHaveBox3D = true;
+#else
+constexpr bool kHaveBox3D = false;
+#endif
 
 struct Measured {
   RunResult result;
   double peak_mib = 0;
+  bool absent = false;  // the engine is not in this build (Box3D without ../shared/peers/box3d)
 };
 
 // The runs of SCENES.md, in its order; then boxes and spheres with sleeping off, which the
@@ -162,7 +179,7 @@ void print_header() {
               "engine", "median", "p90", "max", "ratio", "top drift", "any drift", "asleep at", "moving", "sunk",
               "peak MiB");
   std::printf("%-14s %6s %-9s %-5s %-8s %8s %8s %8s %6s %9s %9s %9s %6s %5s %8s\n", "", "", "", "", "", "ms/step",
-              "ms/step", "ms/step", "i/B", "m", "m", "", ">5cm/s", "y<0", "");
+              "ms/step", "ms/step", "i/peer", "m", "m", "", ">5cm/s", "y<0", "");
 }
 
 void print_row(const Run& run, EngineId engine, const Measured& m, std::optional<double> ratio) {
@@ -172,6 +189,11 @@ void print_row(const Run& run, EngineId engine, const Measured& m, std::optional
   const std::string bodies = first ? std::to_string(make_scene(run.scene).dynamic_count()) : "";
   const std::string length = first ? run_length(run.steps) : "";
   const char* sleep = first ? (run.sleep ? "on" : "off") : "";
+  if (m.absent) {
+    std::printf("%-14s %6s %-9s %-5s %-8s absent: built without ../shared/peers/box3d\n", scene.c_str(), bodies.c_str(),
+                length.c_str(), sleep, engine_name(engine));
+    return;
+  }
   if (!r.ok) {
     std::printf("%-14s %6s %-9s %-5s %-8s failed: %s\n", scene.c_str(), bodies.c_str(), length.c_str(), sleep,
                 engine_name(engine), r.error);
@@ -187,9 +209,12 @@ void print_row(const Run& run, EngineId engine, const Measured& m, std::optional
 
 struct Outcome {
   Run run;
-  Measured impulse, bullet;
-  bool both_ok() const { return impulse.result.ok && bullet.result.ok; }
-  double ratio() const { return impulse.result.median_ms / bullet.result.median_ms; }
+  Measured impulse, bullet, box3d;
+  Measured& of(EngineId e) { return e == EngineId::impulse ? impulse : e == EngineId::bullet ? bullet : box3d; }
+  const Measured& of(EngineId e) const { return e == EngineId::impulse ? impulse : e == EngineId::bullet ? bullet : box3d; }
+  bool ok(EngineId peer) const { return impulse.result.ok && of(peer).result.ok; }
+  // impulse's median over the peer's: below 1, impulse is the faster.
+  double ratio(EngineId peer) const { return impulse.result.median_ms / of(peer).result.median_ms; }
 };
 
 const char* stack_verdict(const RunResult& r) {
@@ -203,32 +228,44 @@ const char* stack_verdict(const RunResult& r) {
 // sink its top by centimetres. Standing: nothing moved a tenth of a box, nothing moves at the end.
 bool stands(const RunResult& r) { return std::max(r.top_drift, r.any_drift) < 0.1 && r.moving == 0; }
 
-const Outcome* find(const std::vector<Outcome>& outcomes, const std::string& scene, bool sleep) {
+// The first run of this scene with this sleeping whose impulse run and `peer`'s both succeeded.
+const Outcome* find(const std::vector<Outcome>& outcomes, const std::string& scene, bool sleep, EngineId peer) {
   for (const Outcome& o : outcomes)
-    if (o.run.scene == scene && o.run.sleep == sleep && o.both_ok()) return &o;
+    if (o.run.scene == scene && o.run.sleep == sleep && o.ok(peer)) return &o;
   return nullptr;
 }
 
+const char* verdict(const Outcome& o, EngineId e) {
+  const RunResult& r = o.of(e).result;
+  return o.run.scene == "large-pyramid" && stands(r) ? "stands" : stack_verdict(r);
+}
+
 void print_goals(const std::vector<Outcome>& outcomes) {
-  std::printf("\nGoal 1: impulse's median ms/step <= 0.8x Bullet's, sleeping off\n");
+  // Issue 4's goal is against Bullet; Box3D's figures stand beside it (no goal against it yet).
+  std::printf("\nGoal 1: impulse's median ms/step <= 0.8x Bullet's, sleeping off (Box3D's beside it)\n");
   for (const char* scene : {"boxes", "spheres", "pyramid", "large-pyramid"}) {
-    const Outcome* o = find(outcomes, scene, false);
+    const Outcome* o = find(outcomes, scene, false, EngineId::bullet);
     if (!o) continue;
-    std::printf("  %-14s %-9s impulse %8.3f  Bullet %8.3f  ratio %5.2f  %s\n", scene, run_length(o->run.steps).c_str(),
-                o->impulse.result.median_ms, o->bullet.result.median_ms, o->ratio(), o->ratio() <= 0.8 ? "met" : "MISSED");
+    std::printf("  %-14s %-9s impulse %8.3f  Bullet %8.3f  ratio %5.2f  %-6s", scene, run_length(o->run.steps).c_str(),
+                o->impulse.result.median_ms, o->bullet.result.median_ms, o->ratio(EngineId::bullet),
+                o->ratio(EngineId::bullet) <= 0.8 ? "met" : "MISSED");
+    if (o->ok(EngineId::box3d))
+      std::printf("  Box3D %8.3f  ratio %5.2f", o->box3d.result.median_ms, o->ratio(EngineId::box3d));
+    std::printf("\n");
   }
   std::printf("\nGoal 2: impulse's stacks hold (largest drift < 1 cm; the large pyramid 'stands': < 10 cm and\n"
-              "nothing moving at the end; 'falls': > 50 cm) where Bullet's fall\n");
+              "nothing moving at the end; 'falls': > 50 cm) where Bullet's fall (Box3D's beside it)\n");
   for (const Outcome& o : outcomes) {
-    if (!o.both_ok() || o.impulse.result.top_drift < 0) continue;
-    const bool large = o.run.scene == "large-pyramid";
-    const char* i = large && stands(o.impulse.result) ? "stands" : stack_verdict(o.impulse.result);
-    const char* b = large && stands(o.bullet.result) ? "stands" : stack_verdict(o.bullet.result);
-    std::printf("  %-14s %-9s sleep %-3s  impulse %-6s (%.4f m)  Bullet %-6s (%.4f m)  %s\n", o.run.scene.c_str(),
-                run_length(o.run.steps).c_str(), o.run.sleep ? "on" : "off", i,
-                std::max(o.impulse.result.top_drift, o.impulse.result.any_drift), b,
-                std::max(o.bullet.result.top_drift, o.bullet.result.any_drift),
-                std::strcmp(i, "holds") == 0 || std::strcmp(i, "stands") == 0 ? "met" : "MISSED");
+    if (!o.impulse.result.ok || o.impulse.result.top_drift < 0) continue;
+    const char* i = verdict(o, EngineId::impulse);
+    std::printf("  %-14s %-9s sleep %-3s  impulse %-6s (%.4f m)", o.run.scene.c_str(), run_length(o.run.steps).c_str(),
+                o.run.sleep ? "on" : "off", i, std::max(o.impulse.result.top_drift, o.impulse.result.any_drift));
+    for (EngineId peer : kPeers) {
+      const RunResult& r = o.of(peer).result;
+      if (r.ok) std::printf("  %s %-6s (%.4f m)", engine_name(peer), verdict(o, peer), std::max(r.top_drift, r.any_drift));
+      else std::printf("  %s %-15s", engine_name(peer), o.of(peer).absent ? "absent" : "failed");
+    }
+    std::printf("  %s\n", std::strcmp(i, "holds") == 0 || std::strcmp(i, "stands") == 0 ? "met" : "MISSED");
   }
 }
 
@@ -236,28 +273,37 @@ void print_growth(const std::vector<Outcome>& outcomes) {
   struct Point { const char* scene; int bodies; const Outcome* o; };
   std::vector<Point> points;
   for (auto [scene, bodies] : {std::pair{"pyramid", 210}, {"boxes", 1000}, {"large-pyramid", 5050}})
-    if (const Outcome* o = find(outcomes, scene, false)) points.push_back({scene, bodies, o});
+    if (const Outcome* o = find(outcomes, scene, false, EngineId::bullet)) points.push_back({scene, bodies, o});
   if (points.empty()) return;
   std::printf("\nGrowth, sleeping off, median ms/step (us per body):\n");
-  for (EngineId e : {EngineId::impulse, EngineId::bullet}) {
-    std::printf("  %-8s", engine_name(e));
+  for (EngineId e : kEngines) {
+    bool all_ok = true;
+    for (const Point& p : points) all_ok = all_ok && p.o->of(e).result.ok;
+    if (!all_ok) continue;
+    std::printf("  %-9s", engine_name(e));
     for (size_t k = 0; k < points.size(); ++k) {
-      const double ms = (e == EngineId::impulse ? points[k].o->impulse : points[k].o->bullet).result.median_ms;
+      const double ms = points[k].o->of(e).result.median_ms;
       std::printf("%s%d %s %.3f (%.2f)", k ? "  ->  " : "", points[k].bodies, points[k].scene, ms, 1000 * ms / points[k].bodies);
     }
     if (points.size() >= 2) {
       const auto& a = points.front();
       const auto& b = points.back();
-      const double ta = (e == EngineId::impulse ? a.o->impulse : a.o->bullet).result.median_ms;
-      const double tb = (e == EngineId::impulse ? b.o->impulse : b.o->bullet).result.median_ms;
+      const double ta = a.o->of(e).result.median_ms;
+      const double tb = b.o->of(e).result.median_ms;
       std::printf("   [x%.1f bodies: x%.1f time, ~n^%.2f]", double(b.bodies) / a.bodies, tb / ta,
                   std::log(tb / ta) / std::log(double(b.bodies) / a.bodies));
     }
     std::printf("\n");
   }
-  std::printf("  %-8s", "ratio");
-  for (size_t k = 0; k < points.size(); ++k) std::printf("%s%d %.2f", k ? "  ->  " : "", points[k].bodies, points[k].o->ratio());
-  std::printf("\n");
+  for (EngineId peer : kPeers) {
+    bool all_ok = true;
+    for (const Point& p : points) all_ok = all_ok && p.o->ok(peer);
+    if (!all_ok) continue;
+    std::printf("  %-9s", ("i/" + std::string(engine_name(peer))).c_str());
+    for (size_t k = 0; k < points.size(); ++k)
+      std::printf("%s%d %.2f", k ? "  ->  " : "", points[k].bodies, points[k].o->ratio(peer));
+    std::printf("\n");
+  }
 }
 
 int usage(const char* program, FILE* to) {
@@ -303,10 +349,12 @@ int main(int argc, char** argv) {
   }
 
   const long cores = sysconf(_SC_NPROCESSORS_ONLN);
-  std::printf("physics_bench%s: impulse vs Bullet, scenes of ../shared/bench/SCENES.md\n", quick ? " --quick" : "");
+  std::printf("physics_bench%s: impulse vs Bullet and Box3D, scenes of ../shared/bench/SCENES.md\n", quick ? " --quick" : "");
   std::printf("date %s; %ld cores (nproc), CPU %s; load average %s at start\n", now_utc().c_str(), cores,
               first_line_of("/proc/cpuinfo", "model name").c_str(), load_average().c_str());
-  std::printf("%s; %s; build %s, %s\n", impulse_description().c_str(), bullet_description().c_str(),
+  std::string box3d = "Box3D absent (built without ../shared/peers/box3d)";
+  if constexpr (kHaveBox3D) box3d = box3d_description();
+  std::printf("%s;\n%s; %s; build %s, %s\n", impulse_description().c_str(), bullet_description().c_str(), box3d.c_str(),
               IMPULSE_BUILD_TYPE, __VERSION__);
   std::printf("every body: unit mass, friction %.1f, restitution %.1f; 60 Hz fixed step; gravity 9.81 m/s^2\n",
               kFriction, kRestitution);
@@ -319,26 +367,33 @@ int main(int argc, char** argv) {
   const bool progress = isatty(2);
   for (size_t k = 0; k < runs.size(); ++k) {
     const Run& run = runs[k];
-    Outcome o{run, {}, {}};
-    for (EngineId e : {EngineId::impulse, EngineId::bullet}) {
+    Outcome o{run, {}, {}, {}};
+    for (EngineId e : kEngines) {
+      if (e == EngineId::box3d && !kHaveBox3D) {
+        o.box3d.absent = true;
+        continue;
+      }
       if (progress)
         std::fprintf(stderr, "\r[%zu/%zu] %s %s sleep %s: %s ...        ", k + 1, runs.size(), run.scene.c_str(),
                      run_length(run.steps).c_str(), run.sleep ? "on" : "off", engine_name(e));
       Measured m = in_child([&](RunResult& r) {
         const Scene scene = make_scene(run.scene);
         if (e == EngineId::impulse) run_impulse(scene, run, r);
-        else run_bullet(scene, run, r);
+        else if (e == EngineId::bullet) run_bullet(scene, run, r);
+#ifdef IMPULSE_BENCH_HAVE_BOX3D
+        else run_box3d(scene, run, r);
+#endif
       });
       failed = failed || !m.result.ok;
-      (e == EngineId::impulse ? o.impulse : o.bullet) = m;
+      o.of(e) = m;
     }
     if (progress) std::fprintf(stderr, "\r%70s\r", "");
-    print_row(run, EngineId::impulse, o.impulse, o.both_ok() ? std::optional<double>(o.ratio()) : std::nullopt);
-    print_row(run, EngineId::bullet, o.bullet, std::nullopt);
+    for (EngineId e : kEngines)
+      print_row(run, e, o.of(e), e != EngineId::impulse && o.ok(e) ? std::optional<double>(o.ratio(e)) : std::nullopt);
     std::fflush(stdout);
     outcomes.push_back(o);
   }
-  std::printf("\nratio i/B: impulse's median / Bullet's; drift: largest displacement from the start (top box; any box);\n"
+  std::printf("\nratio i/peer: impulse's median / that peer's (below 1: impulse is faster); drift: largest displacement from the start (top box; any box);\n"
               "moving: faster than 5 cm/s at the end; sunk: centre below the ground's top at the end; * not in SCENES.md\n");
   print_goals(outcomes);
   print_growth(outcomes);

@@ -1,6 +1,6 @@
-// The physics benchmark's scenes (../shared/bench/SCENES.md), described once without either
-// engine so that impulse and Bullet get exactly the same bodies, and the measurement loop that
-// both engines' runs share.
+// The physics benchmark's scenes (../shared/bench/SCENES.md), described once without any engine
+// so that impulse, Bullet and Box3D get exactly the same bodies, and the measurement loop that
+// every engine's run shares.
 #pragma once
 #include <algorithm>
 #include <chrono>
@@ -31,7 +31,7 @@ struct BodySpec {
   Quaternion orientation;
 };
 
-// Both engines give every body this material: Bullet's defaults.
+// Every engine gives every body this material: Bullet's defaults.
 constexpr double kFriction = 0.5;
 constexpr double kRestitution = 0;
 constexpr double kTimeStep = 1.0 / 60;
@@ -74,7 +74,7 @@ struct RunResult {
   int sunk = 0;                  // dynamic bodies whose centre ended below the ground's top (y < 0)
 };
 
-// The loop both engines share. Engine: step(); V3 position(i) and double speed(i) for dynamic
+// The loop every engine shares. Engine: step(); V3 position(i) and double speed(i) for dynamic
 // body i (in scene order); bool all_asleep(). Only step() is timed.
 template <class Engine>
 void measure(Engine& engine, const Scene& scene, const Run& run, RunResult& out) {
@@ -115,9 +115,12 @@ void measure(Engine& engine, const Scene& scene, const Run& run, RunResult& out)
   out.ok = true;
 }
 
-// The two engines (impulse_scenes.cpp, bullet_scenes.cpp). They throw on failure.
+// The engines (impulse_scenes.cpp, bullet_scenes.cpp, box3d_scenes.cpp). They throw on failure.
+// Box3D's are defined only in a build with Box3D (IMPULSE_BENCH_HAVE_BOX3D).
 void run_impulse(const Scene& scene, const Run& run, RunResult& out);
 void run_bullet(const Scene& scene, const Run& run, RunResult& out);
 std::string bullet_description();  // version and precision
+void run_box3d(const Scene& scene, const Run& run, RunResult& out);
+std::string box3d_description();  // version, sub-steps, workers, precision
 
 }  // namespace impulse::bench
