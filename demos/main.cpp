@@ -4,6 +4,7 @@
 #include "demos/film/render_scene.h"
 #include "demos/scene/scene_file.h"
 #include "demos/scene/video_quality.h"
+#include "demos/simulate.h"
 
 #include <CLI/CLI.hpp>
 
@@ -28,8 +29,9 @@ constexpr int kExitBadInput = 1;  // the scene file or the command line is wrong
 constexpr int kExitOutput = 3;    // the output cannot be written; nothing was replaced, no temporary left
 constexpr int kExitFailure = 4;   // anything else went wrong (the renderer, the encoder)
 
-// What the command line changes in every scene it renders.
+// What the command line changes in every scene it reads.
 struct VideoOverrides {
+  std::vector<std::string> settings;  // --set KEY=VALUE, over the scene file
   std::string quality;  // empty: the scene's
   std::optional<int> width, height, fps, crf;
   std::string x264_preset;  // empty: the scene's
@@ -92,7 +94,7 @@ std::vector<int> parse_frames(const std::string& list) {
 
 int render_one(const std::string& scene_path, demos::RenderOptions options, const VideoOverrides& overrides,
                bool progress) {
-  demos::Scene scene = demos::load_scene(scene_path);
+  demos::Scene scene = demos::load_scene(scene_path, overrides.settings);
   overrides.apply(scene, options);
   demos::ProgressBar bar(progress, scene_path);
   options.progress = [&bar](int done, int total) { bar.update(done, total); };
@@ -124,7 +126,16 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
   return 0;
 }
 
+void add_set_option(CLI::App* command, std::vector<std::string>& settings) {
+  command->add_option("--set", settings,
+                      "KEY=VALUE: a scene field over the file's, checked as the file's are; repeatable. "
+                      "world.friction=false, world.method=projection, body[ball].restitution=0.2, body[0].mass=2, "
+                      "video.quality=low, caption[1].text=Hello (a bare word is a string)")
+      ->type_name("KEY=VALUE");
+}
+
 void add_video_options(CLI::App* command, VideoOverrides& overrides) {
+  add_set_option(command, overrides.settings);
   command->add_option("--quality", overrides.quality,
                       "Preset: low (854x480, 15 fps), medium (1280x720, 30 fps), high (1920x1080, 60 fps); "
                       "default: the scene's [video], else medium")
@@ -152,16 +163,33 @@ void add_video_options(CLI::App* command, VideoOverrides& overrides) {
 
 }  // namespace
 
+constexpr const char* kExitCodes =
+    "\nExit codes: 0 done; 1 the scene file or the command line is wrong (nothing written); 3 the output\n"
+    "cannot be written (nothing replaced, no temporary left); 4 anything else failed; 130 / 143\n"
+    "interrupted by SIGINT / SIGTERM.";
+
 int main(int argc, char** argv) {
   CLI::App app{"impulse: rigid-body collision physics rendered into teaching videos, headless.\n"
                "Scene files are TOML (see README.md, 'Scene files'); videos are H.264 MP4 (BT.709, faststart),\n"
                "written as NAME.mp4.part and renamed when complete."};
+  app.footer(std::string("\nExamples:\n"
+                         "  impulse render assets/scenes/bounce.toml                  # -> out/bounce.mp4\n"
+                         "  impulse render assets/scenes/ex1_friction_off.toml --set world.friction=true -o on.mp4\n"
+                         "  impulse simulate assets/scenes/bounce.toml --trace bodies.csv --world world.csv\n"
+                         "  impulse catalogue -o out                                  # every scene of assets/scenes\n") +
+             kExitCodes);
   app.require_subcommand(1);
+  app.fallthrough();  // -q and --progress also after the subcommand
   bool quiet = false, force_progress = false;
   app.add_flag("-q,--quiet", quiet, "No progress bar on stderr");
   app.add_flag("--progress", force_progress, "A progress bar even when stderr is not a terminal (e.g. in a log)");
 
   auto* render = app.add_subcommand("render", "Simulate one scene file and write it as an MP4 video (and PNG frames)");
+  render->footer(std::string("\nExamples:\n"
+                             "  impulse render assets/scenes/bounce.toml -o out/bounce.mp4\n"
+                             "  impulse render assets/scenes/bounce.toml --quality low --set body[0].restitution=0.9\n"
+                             "  impulse render assets/scenes/s4_angular.toml --png frames --frames 0,45,90\n") +
+                 kExitCodes);
   std::string scene_path, video_path, png_directory, frame_list;
   VideoOverrides render_overrides;
   render->add_option("scene", scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
@@ -171,14 +199,42 @@ int main(int argc, char** argv) {
   add_video_options(render, render_overrides);
 
   auto* catalogue = app.add_subcommand("catalogue", "Render every scene of a directory into videos");
+  catalogue->footer(std::string("\nExamples:\n"
+                                "  impulse catalogue -o out\n"
+                                "  impulse catalogue --scenes my_course/ -o videos/ --quality low\n") +
+                    kExitCodes);
   std::string scenes_directory = "assets/scenes", out_directory = "out";
   VideoOverrides catalogue_overrides;
   catalogue->add_option("--scenes", scenes_directory, "Directory of scene files")->capture_default_str();
   catalogue->add_option("-o,--output", out_directory, "Directory for the videos")->capture_default_str();
   add_video_options(catalogue, catalogue_overrides);
 
+  auto* simulate = app.add_subcommand("simulate", "Simulate a scene and write its numbers as CSV, without pictures");
+  simulate->footer(std::string("\nExamples:\n"
+                               "  impulse simulate assets/scenes/bounce.toml --trace bodies.csv\n"
+                               "  impulse simulate scene.toml --duration 2 --every 6 --contacts contacts.csv --world world.csv\n"
+                               "  impulse simulate scene.toml --set world.friction=false --trace no_friction.csv\n") +
+                   kExitCodes);
+  demos::TraceOptions trace;
+  std::vector<std::string> simulate_settings;
+  simulate->add_option("scene", scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
+  simulate->add_option("--duration", trace.duration, "Seconds of simulated time (default: the scene's)")
+      ->check(CLI::Range(0.0, 36000.0));
+  simulate->add_option("--every", trace.every, "Write every Nth step (and the last); default 1")->check(CLI::Range(1, 1000000));
+  simulate->add_option("--trace", trace.bodies_path, "CSV: a row per body per step (time, position, orientation, velocities)");
+  simulate->add_option("--contacts", trace.contacts_path,
+                       "CSV: a row per contact per step (bodies, point, normal, penetration, impulses)");
+  simulate->add_option("--world", trace.world_path, "CSV: a row per step (energies, linear and angular momentum)");
+  add_set_option(simulate, simulate_settings);
+
   auto* check = app.add_subcommand("check", "Read a scene file and report any error in it, without rendering");
+  check->footer(std::string("\nExamples:\n"
+                            "  impulse check assets/scenes/bounce.toml\n"
+                            "  impulse check scene.toml --set body[ball].restitution=1.2   # refused: e in [0, 1]\n") +
+                kExitCodes);
+  std::vector<std::string> check_settings;
   check->add_option("scene", scene_path, "Scene file (.toml)")->required();
+  add_set_option(check, check_settings);
 
   try {
     app.parse(argc, argv);
@@ -200,8 +256,16 @@ int main(int argc, char** argv) {
       return render_one(scene_path, options, render_overrides, progress);
     }
     if (*catalogue) return render_catalogue(scenes_directory, out_directory, progress, catalogue_overrides);
+    if (*simulate) {
+      if (trace.bodies_path.empty() && trace.contacts_path.empty() && trace.world_path.empty())
+        throw std::invalid_argument("simulate writes CSV: give --trace, --contacts or --world (or several)");
+      const demos::Scene scene = demos::load_scene(scene_path, simulate_settings);
+      const long steps = demos::simulate_scene(scene, trace);
+      std::fprintf(stderr, "simulated %ld steps of %s\n", steps, scene_path.c_str());
+      return 0;
+    }
     if (*check) {
-      const demos::Scene scene = demos::load_scene(scene_path);
+      const demos::Scene scene = demos::load_scene(scene_path, check_settings);
       std::printf("%s: fine, %zu bodies, %.1f s\n", scene_path.c_str(), scene.bodies.size(), scene.duration);
       return 0;
     }

@@ -104,6 +104,7 @@ struct VideoEncoder::State {
 
     ffmpeg::Dictionary options;
     av_dict_set(&options.entries, "movflags", "+faststart", 0);
+    if (!settings.comment.empty()) av_dict_set(&format->metadata, "comment", settings.comment.c_str(), 0);
     error = avformat_write_header(format.get(), &options.entries);
     if (error < 0) fail_output("cannot write the mp4 header", error);
 

@@ -73,6 +73,7 @@ DecodedVideo decode_video(const std::string& path) {
 
   error = avformat_find_stream_info(format.get(), nullptr);
   if (error < 0) fail(path, "cannot read stream info", error);
+  const AVDictionaryEntry* comment = av_dict_get(format->metadata, "comment", nullptr, 0);
   const AVCodec* decoder_codec = nullptr;
   const int stream_index = av_find_best_stream(format.get(), AVMEDIA_TYPE_VIDEO, -1, -1, &decoder_codec, 0);
   if (stream_index < 0) fail(path, "no video stream", stream_index);
@@ -90,6 +91,7 @@ DecodedVideo decode_video(const std::string& path) {
   video.height = codec->height;
   const AVRational rate = stream->avg_frame_rate.num != 0 ? stream->avg_frame_rate : stream->r_frame_rate;
   video.fps = rate.den != 0 ? av_q2d(rate) : 0.0;
+  if (comment != nullptr) video.comment = comment->value;
 
   Decoder decoder{path, codec.get(), video, ffmpeg::FrameHandle(av_frame_alloc()), nullptr};
   ffmpeg::PacketHandle packet(av_packet_alloc());

@@ -11,6 +11,7 @@ struct DecodedVideo {
   int width = 0;
   int height = 0;
   double fps = 0.0;  // the stream's average frame rate
+  std::string comment;  // the file's comment tag
   std::vector<render::Frame> frames;  // every frame in presentation order, RGBA, rows top to bottom
 };
 

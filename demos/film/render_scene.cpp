@@ -48,7 +48,11 @@ render::DrawList make_draw_list(const Scene& scene, const physics::World& world,
 // thread; this thread draws (with llvmpipe's threads); a worker paints the overlay and encodes.
 // Bounded queues between them keep memory flat whatever the video's length.
 void render_scene(const Scene& scene, const RenderOptions& options) {
-  const render::VideoSettings video = to_render(scene.video);
+  render::VideoSettings video = to_render(scene.video);
+  for (const std::string& setting : scene.settings) {  // the video records the settings that changed it
+    if (!video.comment.empty()) video.comment += ' ';
+    video.comment.append("--set ").append(setting);
+  }
   // The output first: a path that cannot be written is refused before any simulation.
   std::unique_ptr<render::VideoEncoder> encoder;
   if (!options.video_path.empty()) encoder = std::make_unique<render::VideoEncoder>(options.video_path, video);

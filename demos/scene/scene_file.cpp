@@ -1,12 +1,13 @@
 #include "demos/scene/scene_file.h"
 
+#include "demos/scene/scene_overrides.h"
 #include "demos/scene/scene_sections.h"
 
 #include <sstream>
 
 namespace impulse::demos {
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path, const std::vector<std::string>& settings) {
   toml::table root;
   try {
     root = toml::parse_file(path);
@@ -19,8 +20,12 @@ Scene load_scene(const std::string& path) {
     throw SceneError(message.str());
   }
 
+  const OverrideNodes written = apply_overrides(root, settings);
+  const OverrideScope scope(written);
+
   Scene scene;
   scene.path = path;
+  scene.settings = settings;
   TableReader top(root, path, "scene");
   if (const toml::table* t = top.table("scene")) {
     TableReader r(*t, path, "[scene]");

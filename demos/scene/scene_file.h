@@ -32,6 +32,7 @@ struct DrawOptions {
 
 struct Scene {
   std::string path;
+  std::vector<std::string> settings;  // the --set arguments applied over the file
   std::string title;
   double duration = 5;           // s of simulated time
   physics::WorldSettings world;
@@ -47,7 +48,8 @@ struct Scene {
   PlaybackOptions playback;
 };
 
-Scene load_scene(const std::string& path);
+// `settings` are --set KEY=VALUE arguments (scene_overrides.h), applied over the file.
+Scene load_scene(const std::string& path, const std::vector<std::string>& settings = {});
 
 // The index of the first body named `name` in scene.bodies, -1 if none is.
 int find_body(const Scene& scene, std::string_view name);

@@ -1,11 +1,19 @@
 #include "demos/scene/table_reader.h"
 
 #include "demos/scene/scene_file.h"
+#include "demos/scene/scene_overrides.h"
 
 #include <cstdio>
 #include <sstream>
 
 namespace impulse::demos {
+
+namespace {
+thread_local const std::map<const toml::node*, std::string>* overrides = nullptr;
+}  // namespace
+
+OverrideScope::OverrideScope(const std::map<const toml::node*, std::string>& written) { overrides = &written; }
+OverrideScope::~OverrideScope() { overrides = nullptr; }
 
 TableReader::TableReader(const toml::table& table, std::string file, std::string where)
     : table_(table), file_(std::move(file)), where_(std::move(where)) {}
@@ -13,7 +21,14 @@ TableReader::TableReader(const toml::table& table, std::string file, std::string
 void TableReader::fail(const toml::node* node, std::string_view key, const std::string& reason) const {
   const auto& source = node ? node->source() : table_.source();
   std::ostringstream message;
-  message << file_ << ':' << source.begin.line << ": " << where_;
+  // A value given on the command line is named by its --set argument, not by a line of the file.
+  const std::string* set_by = nullptr;
+  if (overrides && node)
+    if (const auto found = overrides->find(node); found != overrides->end()) set_by = &found->second;
+  if (set_by)
+    message << *set_by << ": " << where_;
+  else
+    message << file_ << ':' << source.begin.line << ": " << where_;
   if (!key.empty()) message << " field '" << key << "'";
   message << ": " << reason;
   throw SceneError(message.str());
@@ -77,7 +92,10 @@ std::string TableReader::choice(std::string_view key, std::string fallback, std:
     known += (known.empty() ? "" : ", ") + std::string(c);
   }
   const toml::node* node = get(key);
-  fail(node, key, node ? "unknown value '" + value + "' (known: " + known + ")" : "missing (one of: " + known + ")");
+  const std::string hint = did_you_mean(value, std::vector<std::string>(choices.begin(), choices.end()));
+  fail(node, key,
+       node ? "unknown value '" + value + "'" + (hint.empty() ? "" : "; " + hint) + " (known: " + known + ")"
+            : "missing (one of: " + known + ")");
 }
 
 physics::Vec3 TableReader::vec3(std::string_view key, const physics::Vec3& fallback) {
@@ -127,7 +145,8 @@ void TableReader::finish() const {
     if (used_.count(key.str())) continue;
     std::string known;
     for (const auto& k : used_) known += (known.empty() ? "" : ", ") + k;
-    fail(&node, key.str(), "unknown field (known here: " + known + ")");
+    const std::string hint = did_you_mean(std::string(key.str()), std::vector<std::string>(used_.begin(), used_.end()));
+    fail(&node, key.str(), "unknown field" + (hint.empty() ? std::string() : "; " + hint) + " (known here: " + known + ")");
   }
 }
 

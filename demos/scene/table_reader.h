@@ -7,12 +7,23 @@
 #include <toml++/toml.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <span>
 #include <string>
 #include <string_view>
 
 namespace impulse::demos {
+
+// While a scene is read, the values --set wrote: a message about one names its argument instead
+// of a line of the file. One scope at a time per thread.
+class OverrideScope {
+ public:
+  explicit OverrideScope(const std::map<const toml::node*, std::string>& written);
+  ~OverrideScope();
+  OverrideScope(const OverrideScope&) = delete;
+  OverrideScope& operator=(const OverrideScope&) = delete;
+};
 
 class TableReader {
  public:

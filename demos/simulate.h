@@ -1,0 +1,23 @@
+// `impulse simulate`: a scene's numbers, without pictures. Steps the world once and writes CSV
+// tables, one row per body per step, per contact, or per step for the world, each column headed
+// with its unit. Nothing is drawn or encoded, so it costs what the physics costs.
+#pragma once
+#include <string>
+
+#include "demos/scene/scene_file.h"
+
+namespace impulse::demos {
+
+struct TraceOptions {
+  double duration = -1;      // s; < 0: the scene's
+  int every = 1;             // write every Nth step (and the last)
+  std::string bodies_path;   // time,step,body,position,orientation,velocity,angular velocity
+  std::string contacts_path; // step,time,body_a,body_b,point,normal,penetration,normal and friction impulse
+  std::string world_path;    // step,time,kinetic and potential energy,linear and angular momentum
+};
+
+// Returns the steps taken. Throws render::OutputError when a file cannot be written; a file
+// appears under its name only when complete.
+long simulate_scene(const Scene& scene, const TraceOptions& options);
+
+}  // namespace impulse::demos

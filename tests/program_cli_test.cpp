@@ -1,0 +1,181 @@
+// The command line a student and a course's CI use, run as a program: --set changes what the
+// trace shows and is refused naming itself; `simulate` writes numbers that obey the physics;
+// options work after the subcommand.
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/child_process.h"
+#include "tests/video_decode.h"
+
+namespace impulse {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path work_directory() {
+  const fs::path dir = fs::temp_directory_path() / ("impulse_program_cli_" + std::to_string(getpid()) + "_" +
+                                                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+testing::ChildResult impulse(const std::vector<std::string>& arguments) {
+  std::vector<std::string> argv = {IMPULSE_PROGRAM};
+  argv.insert(argv.end(), arguments.begin(), arguments.end());
+  return testing::run_child(argv);
+}
+
+// A CSV file as rows of named columns.
+std::vector<std::map<std::string, std::string>> read_csv(const fs::path& path) {
+  std::ifstream file(path);
+  std::string line;
+  std::getline(file, line);
+  std::vector<std::string> header;
+  std::stringstream names(line);
+  for (std::string name; std::getline(names, name, ',');) header.push_back(name);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(file, line)) {
+    std::map<std::string, std::string> row;
+    std::stringstream cells(line);
+    std::string cell;
+    for (size_t i = 0; i < header.size() && std::getline(cells, cell, ','); ++i) row[header[i]] = cell;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+double number(const std::map<std::string, std::string>& row, const std::string& column) {
+  return std::stod(row.at(column));
+}
+
+// The last row of `body` in a --trace file.
+std::map<std::string, std::string> last_of(const std::vector<std::map<std::string, std::string>>& rows,
+                                           const std::string& body) {
+  std::map<std::string, std::string> last;
+  for (const auto& row : rows)
+    if (row.at("body") == "\"" + body + "\"") last = row;
+  return last;
+}
+
+// Two spheres head on in empty space: 1 kg at 3 m/s onto 2 kg at rest, e = 1.
+constexpr const char* kHeadOn = R"(
+[scene]
+duration = 2.0
+[world]
+gravity = [0, 0, 0]
+[[body]]
+name = "light"
+shape = "sphere"
+radius = 0.5
+mass = 1.0
+restitution = 1.0
+position = [-2, 0, 0]
+velocity = [3, 0, 0]
+[[body]]
+name = "heavy"
+shape = "sphere"
+radius = 0.5
+mass = 2.0
+restitution = 1.0
+position = [1, 0, 0]
+)";
+
+TEST(Simulate, AHeadOnHitKeepsMomentumAndExchangesItAsEquationEightSays) {
+  const fs::path dir = work_directory();
+  std::ofstream(dir / "head_on.toml") << kHeadOn;
+  const testing::ChildResult result = impulse({"simulate", (dir / "head_on.toml").string(), "--trace",
+                                               (dir / "bodies.csv").string(), "--world", (dir / "world.csv").string()});
+  ASSERT_TRUE(result.succeeded()) << result.describe();
+
+  const auto world = read_csv(dir / "world.csv");
+  ASSERT_EQ(world.size(), 120u);  // 2 s at 60 steps a second
+  for (const auto& row : world) EXPECT_NEAR(number(row, "px_kg_m_per_s"), 3.0, 1e-9) << "step " << row.at("step");
+  // Elastic: v1' = (m1 - m2) / (m1 + m2) v1 = -1 m/s, v2' = 2 m1 / (m1 + m2) v1 = 2 m/s.
+  const auto bodies = read_csv(dir / "bodies.csv");
+  EXPECT_NEAR(number(last_of(bodies, "light"), "vx_m_per_s"), -1.0, 1e-3);
+  EXPECT_NEAR(number(last_of(bodies, "heavy"), "vx_m_per_s"), 2.0, 1e-3);
+  EXPECT_NEAR(number(bodies.front(), "time_s"), 1.0 / 60, 1e-9);
+}
+
+// A box sliding on the ground: friction stops it; --set world.friction=false lets it slide on.
+constexpr const char* kSlide = R"(
+[scene]
+duration = 2.0
+[[body]]
+name = "ground"
+shape = "plane"
+friction = 0.5
+[[body]]
+name = "box"
+shape = "box"
+size = [1, 1, 1]
+position = [0, 0.5, 0]
+velocity = [3, 0, 0]
+friction = 0.5
+)";
+
+TEST(Set, FrictionOffChangesWhatTheTraceShows) {
+  const fs::path dir = work_directory();
+  std::ofstream(dir / "slide.toml") << kSlide;
+  const std::string scene = (dir / "slide.toml").string();
+  ASSERT_TRUE(impulse({"simulate", scene, "--trace", (dir / "with.csv").string()}).succeeded());
+  const testing::ChildResult without =
+      impulse({"simulate", scene, "--set", "world.friction=false", "--trace", (dir / "without.csv").string()});
+  ASSERT_TRUE(without.succeeded()) << without.describe();
+  EXPECT_NEAR(number(last_of(read_csv(dir / "with.csv"), "box"), "vx_m_per_s"), 0.0, 1e-3);  // stopped by mu g
+  EXPECT_NEAR(number(last_of(read_csv(dir / "without.csv"), "box"), "vx_m_per_s"), 3.0, 1e-6);
+}
+
+TEST(Set, ABadValueOrPathIsRefusedNamingTheArgument) {
+  const fs::path dir = work_directory();
+  std::ofstream(dir / "slide.toml") << kSlide;
+  const std::string scene = (dir / "slide.toml").string();
+  struct Case {
+    std::string setting, says;
+  };
+  for (const Case& each : std::vector<Case>{
+           {"body[box].restitution=2", "--set body[box].restitution=2: [[body]] 'box' field 'restitution': must be >= 0 and <= 1, got 2"},
+           {"world.frictoin=false", "--set world.frictoin=false: [world] field 'frictoin': unknown field; did you mean 'friction'?"},
+           {"body[bx].mass=2", "--set body[bx].mass=2: no [[body]] is named 'bx'; did you mean 'box'?"},
+           {"world.method=projektion", "unknown value 'projektion'; did you mean 'projection'?"},
+           {"wrld.friction=false", "--set wrld.friction=false: a scene has no table 'wrld'; did you mean 'world'?"},
+           {"body[5].mass=2", "--set body[5].mass=2: there are 2 [[body]] tables, numbered from 0"}}) {
+    const testing::ChildResult result = impulse({"check", scene, "--set", each.setting});
+    EXPECT_EQ(result.exit_code, 1) << each.setting;
+    EXPECT_NE(result.stderr_text.find(each.says), std::string::npos) << result.stderr_text;
+  }
+}
+
+TEST(Cli, OptionsWorkAfterTheSubcommandAndHelpShowsExamplesAndExitCodes) {
+  const fs::path dir = work_directory();
+  std::ofstream(dir / "slide.toml") << kSlide;
+  EXPECT_TRUE(impulse({"check", (dir / "slide.toml").string(), "-q"}).succeeded());
+  for (const char* command : {"render", "simulate", "check", "catalogue"}) {
+    const testing::ChildResult help = impulse({command, "--help"});
+    EXPECT_TRUE(help.succeeded()) << command;
+  }
+}
+
+// The video records the settings that changed it, in its comment tag.
+TEST(Set, TheVideoRecordsTheSettings) {
+  const fs::path dir = work_directory();
+  std::ofstream(dir / "slide.toml") << std::string(kSlide) + "[video]\nwidth = 160\nheight = 120\nfps = 10\n";
+  const fs::path video = dir / "slide.mp4";
+  const testing::ChildResult result = impulse(
+      {"-q", "render", (dir / "slide.toml").string(), "--set", "world.friction=false", "-o", video.string()});
+  ASSERT_TRUE(result.succeeded()) << result.describe();
+  EXPECT_EQ(testing::decode_video(video.string()).comment, "--set world.friction=false");
+}
+
+}  // namespace
+}  // namespace impulse
