@@ -3,6 +3,7 @@
 #include "demos/progress_bar.h"
 #include "demos/film/render_scene.h"
 #include "demos/scene/scene_file.h"
+#include "demos/scene/scene_world.h"
 #include "demos/scene/video_quality.h"
 #include "demos/simulate.h"
 
@@ -61,6 +62,13 @@ struct VideoOverrides {
   }
 };
 
+// The scene with the --set settings over it; what is odd but allowed is said on stderr.
+demos::Scene load(const std::string& scene_path, const std::vector<std::string>& settings) {
+  demos::Scene scene = demos::load_scene(scene_path, settings);
+  for (const std::string& warning : demos::start_warnings(scene)) std::fprintf(stderr, "impulse: %s\n", warning.c_str());
+  return scene;
+}
+
 // Says what went wrong and returns the exit code for it.
 int report(const std::exception& error) {
   std::fprintf(stderr, "impulse: %s\n", error.what());
@@ -94,7 +102,7 @@ std::vector<int> parse_frames(const std::string& list) {
 
 int render_one(const std::string& scene_path, demos::RenderOptions options, const VideoOverrides& overrides,
                bool progress) {
-  demos::Scene scene = demos::load_scene(scene_path, overrides.settings);
+  demos::Scene scene = load(scene_path, overrides.settings);
   overrides.apply(scene, options);
   demos::ProgressBar bar(progress, scene_path);
   options.progress = [&bar](int done, int total) { bar.update(done, total); };
@@ -259,13 +267,13 @@ int main(int argc, char** argv) {
     if (*simulate) {
       if (trace.bodies_path.empty() && trace.contacts_path.empty() && trace.world_path.empty())
         throw std::invalid_argument("simulate writes CSV: give --trace, --contacts or --world (or several)");
-      const demos::Scene scene = demos::load_scene(scene_path, simulate_settings);
+      const demos::Scene scene = load(scene_path, simulate_settings);
       const long steps = demos::simulate_scene(scene, trace);
       std::fprintf(stderr, "simulated %ld steps of %s\n", steps, scene_path.c_str());
       return 0;
     }
     if (*check) {
-      const demos::Scene scene = demos::load_scene(scene_path, check_settings);
+      const demos::Scene scene = load(scene_path, check_settings);
       std::printf("%s: fine, %zu bodies, %.1f s\n", scene_path.c_str(), scene.bodies.size(), scene.duration);
       return 0;
     }

@@ -1,4 +1,5 @@
 // [world], [[body]] and [[joint]]: what the physics simulates.
+#include "demos/scene/scene_overrides.h"
 #include "demos/scene/scene_sections.h"
 
 #include <cmath>
@@ -39,9 +40,9 @@ void read_body(const toml::table& table, const std::string& path, int index, Sce
   r.get("name");
   const std::string shape = r.choice("shape", "", {"sphere", "box", "plane"});
   if (shape == "sphere") {
-    def.shape = physics::Shape::sphere(r.number("radius", 0.5, 0, INFINITY, true));
+    def.shape = physics::Shape::sphere(r.number("radius", 0.5, 0, kLargestSize, true));
   } else if (shape == "box") {
-    const Vec3 size = r.vec3("size", Vec3(1, 1, 1));
+    const Vec3 size = r.vec3("size", Vec3(1, 1, 1), kLargestSize, "m", "a lecture's bodies are smaller");
     if (!(size.minCoeff() > 0)) r.fail(r.get("size"), "size", "every edge must be > 0 (metres: [x, y, z])");
     def.shape = physics::Shape::box(size / 2);
   } else if (shape == "plane") {
@@ -52,14 +53,14 @@ void read_body(const toml::table& table, const std::string& path, int index, Sce
   }
   def.is_static = r.boolean("static", def.is_static);
   if (shape == "plane" && !def.is_static) r.fail(r.get("static"), "static", "a plane is always static");
-  def.mass = r.number("mass", 0, 0, INFINITY, true);  // 0: from density
-  def.density = r.number("density", def.density, 0, INFINITY, true);
+  def.mass = r.number("mass", 0, 0, kLargestMass, true);  // 0: from density
+  def.density = r.number("density", def.density, 0, kLargestMass, true);
   def.material.restitution = r.number("restitution", def.material.restitution, 0, 1);
   def.material.friction = r.number("friction", def.material.friction, 0);
-  def.position = r.vec3("position", def.position);
+  def.position = r.vec3("position", def.position, kFarthest, "m", kFarthestWhy);
   def.orientation = rotation_from_degrees(r.vec3("rotation", Vec3::Zero()));
-  def.velocity = r.vec3("velocity", def.velocity);
-  def.angular_velocity = r.vec3("angular_velocity", def.angular_velocity);
+  def.velocity = r.vec3("velocity", def.velocity, kFastest, "m/s", kFastestWhy);
+  def.angular_velocity = r.vec3("angular_velocity", def.angular_velocity, kFastestSpin, "rad/s", kFastestSpinWhy);
   const Colour colour = r.colour("colour", kBodyPalette[index % std::size(kBodyPalette)]);
   r.finish();
   add_body(r, def, colour, scene);
@@ -69,7 +70,12 @@ int body_index(TableReader& r, const Scene& scene, std::string_view key) {
   const std::string name = r.string(key, "world");
   if (name == "world") return physics::kWorld;
   if (const int index = find_body(scene, name); index >= 0) return index;
-  r.fail(r.get(key), key, "no body is named '" + name + "' (give a [[body]] that name, or say \"world\")");
+  std::vector<std::string> names;
+  for (const physics::BodyDef& body : scene.bodies) names.push_back(body.name);
+  const std::string hint = did_you_mean(name, names);
+  r.fail(r.get(key), key,
+         "no body is named '" + name + "'" + (hint.empty() ? "" : "; " + hint) +
+             " (give a [[body]] that name, or say \"world\")");
 }
 
 }  // namespace

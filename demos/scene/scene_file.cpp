@@ -3,20 +3,49 @@
 #include "demos/scene/scene_overrides.h"
 #include "demos/scene/scene_sections.h"
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace impulse::demos {
+namespace {
+
+constexpr std::uintmax_t kLargestFile = 16 << 20;  // bytes: scene files are text of a few kilobytes
+
+// The file's text, or a SceneError saying why there is none: missing, a directory, too large,
+// not text.
+std::string read_scene_text(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (!fs::exists(status)) throw SceneError(path + ": no such scene file");
+  if (fs::is_directory(status)) throw SceneError(path + ": is a directory, not a scene file (give a .toml file)");
+  if (!fs::is_regular_file(status)) throw SceneError(path + ": is not a regular file (give a .toml file)");
+  if (fs::file_size(path, error) > kLargestFile)
+    throw SceneError(path + ": is larger than 16 MiB; a scene file is text of a few kilobytes");
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  if (!(text << file.rdbuf()) && fs::file_size(path, error) > 0)
+    throw SceneError(path + ": cannot read the scene file");
+  const std::string bytes = text.str();
+  if (bytes.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw SceneError(path + ": the file is empty; a scene needs at least one [[body]] table");
+  if (const size_t zero = bytes.find('\0'); zero != std::string::npos)
+    throw SceneError(path + ": is not a text file (a zero byte at offset " + std::to_string(zero) + ")");
+  return bytes;
+}
+
+}  // namespace
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& settings) {
+  const std::string text = read_scene_text(path);
   toml::table root;
   try {
-    root = toml::parse_file(path);
+    root = toml::parse(text, path);
   } catch (const toml::parse_error& error) {
     std::ostringstream message;
-    if (error.source().begin.line == 0)
-      message << path << ": cannot read the scene file (" << error.description() << ")";
-    else
-      message << path << ':' << error.source().begin.line << ": " << error.description();
+    message << path << ':' << error.source().begin.line << ": " << error.description();
+    if (error.description().find("utf-8") != std::string_view::npos) message << " (save the file as UTF-8)";
     throw SceneError(message.str());
   }
 

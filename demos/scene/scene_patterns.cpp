@@ -17,7 +17,7 @@ using physics::Vec3;
 physics::BodyDef base_body(TableReader& r, const std::string& name) {
   physics::BodyDef def;
   def.name = name;
-  def.mass = r.number("mass", 1, 0, INFINITY, true);
+  def.mass = r.number("mass", 1, 0, kLargestMass, true);
   def.material.restitution = r.number("restitution", 0, 0, 1);
   def.material.friction = r.number("friction", 0.6, 0);
   return def;
@@ -27,7 +27,7 @@ physics::BodyDef base_body(TableReader& r, const std::string& name) {
 void read_pyramid(TableReader& r, Scene& scene) {
   const int base = r.integer("base", 10, 1, 200);
   const Real size = r.number("size", 1, 0, 100, true);
-  const Vec3 origin = r.vec3("position", Vec3::Zero());  // the middle of the base row's bottom
+  const Vec3 origin = r.vec3("position", Vec3::Zero(), kFarthest, "m", kFarthestWhy);  // the middle of the base row's bottom
   physics::BodyDef def = base_body(r, "");
   r.finish();
   def.shape = physics::Shape::box(Vec3::Constant(size / 2));
@@ -45,7 +45,7 @@ void read_lattice(TableReader& r, Scene& scene) {
   const Vec3 count = r.vec3("count", Vec3(10, 10, 10));
   if (count.minCoeff() < 1 || count.prod() > 100000) r.fail(r.get("count"), "count", "each count must be >= 1, at most 100000 bodies");
   const Vec3 pitch = r.vec3("pitch", Vec3(2, 2, 2));
-  const Vec3 origin = r.vec3("position", Vec3(0, 1.5, 0));  // centre of the bottom layer
+  const Vec3 origin = r.vec3("position", Vec3(0, 1.5, 0), kFarthest, "m", kFarthestWhy);  // centre of the bottom layer
   const Real size = r.number("size", 1, 0, 100, true);      // box edge or sphere diameter
   const Real jitter = r.number("jitter", 0, 0, 100);
   const bool tumble = r.boolean("random_orientation", false);

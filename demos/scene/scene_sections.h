@@ -12,6 +12,18 @@ inline constexpr Colour kBodyPalette[] = {{0.90f, 0.62f, 0.00f}, {0.34f, 0.71f, 
                                           {0.80f, 0.47f, 0.65f}, {0.00f, 0.45f, 0.70f}, {0.94f, 0.89f, 0.26f}};
 inline constexpr size_t kRowColourCount = 5;
 
+// Absurd magnitudes are refused, with the reason: what a lecture's scene needs is far below them,
+// and above them the numbers stop meaning what they say.
+inline constexpr double kLargestSize = 1000;  // m, a radius or an edge
+inline constexpr double kLargestMass = 1e9;   // kg, or kg/m^3 for a density
+inline constexpr double kFarthest = 1e4;      // m from the origin
+inline constexpr const char* kFarthestWhy = "beyond, the drawing's float coordinates lose millimetres";
+inline constexpr double kFastest = 1000;      // m/s
+inline constexpr const char* kFastestWhy =
+    "faster, a body moves over 16 m in a 60 Hz step and passes through others unseen (tunnelling)";
+inline constexpr double kFastestSpin = 1000;  // rad/s
+inline constexpr const char* kFastestSpinWhy = "faster, a body turns over a quarter turn in a sub-step";
+
 void read_world(TableReader& top, Scene& scene);   // [world]
 void read_bodies(TableReader& top, Scene& scene);  // [[body]]
 void read_patterns(TableReader& top, Scene& scene);  // [[pyramid]], [[lattice]]: many bodies at once

@@ -3,8 +3,15 @@
 #include "demos/scene/scene_file.h"
 #include "physics/world.h"
 
+#include <string>
+#include <vector>
+
 namespace impulse::demos {
 
 physics::World build_world(const Scene& scene);
+
+// What is odd but allowed at the start, as lines to print: bodies that overlap by more than a
+// millimetre (the solver pushes them apart in the first steps, faster than they would ever move).
+std::vector<std::string> start_warnings(const Scene& scene);
 
 }  // namespace impulse::demos

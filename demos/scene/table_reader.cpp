@@ -115,6 +115,17 @@ physics::Vec3 TableReader::vec3(std::string_view key, const physics::Vec3& fallb
   return v;
 }
 
+physics::Vec3 TableReader::vec3(std::string_view key, const physics::Vec3& fallback, double max_length,
+                                const char* unit, const char* why) {
+  const physics::Vec3 v = vec3(key, fallback);
+  if (v.norm() > max_length) {
+    std::ostringstream reason;
+    reason << "must be at most " << max_length << " " << unit << " long, got " << v.norm() << ": " << why;
+    fail(get(key), key, reason.str());
+  }
+  return v;
+}
+
 Colour TableReader::colour(std::string_view key, Colour fallback) {
   const toml::node* node = get(key);
   if (!node) return fallback;

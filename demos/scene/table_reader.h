@@ -45,6 +45,9 @@ class TableReader {
     return choice(key, std::move(fallback), std::span<const std::string_view>(choices.begin(), choices.size()));
   }
   physics::Vec3 vec3(std::string_view key, const physics::Vec3& fallback);
+  // The same, refused when longer than `max_length` (in `unit`), saying `why`.
+  physics::Vec3 vec3(std::string_view key, const physics::Vec3& fallback, double max_length, const char* unit,
+                     const char* why);
   Colour colour(std::string_view key, Colour fallback);
 
   // The sub-table `key` of this table, or null when absent; anything but a table is an error.
