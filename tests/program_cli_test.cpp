@@ -177,5 +177,35 @@ TEST(Set, TheVideoRecordsTheSettings) {
   EXPECT_EQ(testing::decode_video(video.string()).comment, "--set world.friction=false");
 }
 
+std::string contents(const fs::path& path) {
+  std::ostringstream text;
+  text << std::ifstream(path, std::ios::binary).rdbuf();
+  return text.str();
+}
+
+// The same scene gives the same trace with the solver on one thread or two, and the same MP4
+// bytes run after run.
+TEST(Determinism, TracesWhateverTheThreadsAndVideosRunToRun) {
+  const fs::path dir = work_directory();
+  const fs::path scene = fs::path(IMPULSE_SOURCE_DIR) / "assets/scenes/ex3_stacks.toml";
+  for (const char* threads : {"1", "2"}) {
+    const testing::ChildResult result =
+        impulse({"simulate", scene.string(), "--duration", "2", "--set", std::string("world.threads=") + threads,
+                 "--trace", (dir / (std::string("threads_") + threads + ".csv")).string()});
+    ASSERT_TRUE(result.succeeded()) << result.describe();
+  }
+  EXPECT_EQ(contents(dir / "threads_1.csv"), contents(dir / "threads_2.csv"));
+  EXPECT_GT(contents(dir / "threads_1.csv").size(), 100000u);
+
+  std::ofstream(dir / "slide.toml") << std::string(kSlide) + "[video]\nwidth = 160\nheight = 120\nfps = 10\n";
+  for (const char* run : {"a", "b"}) {
+    const testing::ChildResult result = impulse(
+        {"-q", "render", (dir / "slide.toml").string(), "-o", (dir / (std::string(run) + ".mp4")).string()});
+    ASSERT_TRUE(result.succeeded()) << result.describe();
+  }
+  EXPECT_EQ(contents(dir / "a.mp4"), contents(dir / "b.mp4"));
+  EXPECT_GT(contents(dir / "a.mp4").size(), 1000u);
+}
+
 }  // namespace
 }  // namespace impulse
