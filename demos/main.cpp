@@ -27,6 +27,7 @@ namespace {
 
 // Exit codes, as README.md lists them. An interrupted run ends by its signal (130, 143 in a shell).
 constexpr int kExitBadInput = 1;  // the scene file or the command line is wrong; nothing was written
+constexpr int kExitCheckFailed = 2;  // a [[check]] of the scene did not hold (the outputs are written)
 constexpr int kExitOutput = 3;    // the output cannot be written; nothing was replaced, no temporary left
 constexpr int kExitFailure = 4;   // anything else went wrong (the renderer, the encoder)
 
@@ -69,6 +70,18 @@ demos::Scene load(const std::string& scene_path, const std::vector<std::string>&
   return scene;
 }
 
+// Prints each [[check]]'s result on stderr; the exit code: 0, or kExitCheckFailed if one failed.
+int report_checks(const std::string& scene_path, const std::vector<demos::CheckResult>& results) {
+  int failed = 0;
+  for (const demos::CheckResult& result : results) {
+    std::fprintf(stderr, "%s: %s %s: %s\n", scene_path.c_str(), result.passed ? "pass" : "FAIL", result.text.c_str(),
+                 result.measured.c_str());
+    failed += !result.passed;
+  }
+  if (failed > 0) std::fprintf(stderr, "impulse: %s: %d of %zu checks failed\n", scene_path.c_str(), failed, results.size());
+  return failed > 0 ? kExitCheckFailed : 0;
+}
+
 // Says what went wrong and returns the exit code for it.
 int report(const std::exception& error) {
   std::fprintf(stderr, "impulse: %s\n", error.what());
@@ -106,11 +119,11 @@ int render_one(const std::string& scene_path, demos::RenderOptions options, cons
   overrides.apply(scene, options);
   demos::ProgressBar bar(progress, scene_path);
   options.progress = [&bar](int done, int total) { bar.update(done, total); };
-  demos::render_scene(scene, options);
+  const std::vector<demos::CheckResult> checks = demos::render_scene(scene, options);
   bar.finish();
   if (!options.video_path.empty()) std::fprintf(stderr, "wrote %s\n", options.video_path.c_str());
   if (!options.png_directory.empty()) std::fprintf(stderr, "wrote frames to %s/\n", options.png_directory.c_str());
-  return 0;
+  return report_checks(scene_path, checks);
 }
 
 int render_catalogue(const std::string& scenes_directory, const std::string& out_directory, bool progress,
@@ -125,13 +138,14 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
     if (entry.path().extension() == ".toml") scenes.push_back(entry.path());
   std::sort(scenes.begin(), scenes.end());
   fs::create_directories(out_directory);
+  int exit_code = 0;
   for (const fs::path& scene : scenes) {
     demos::RenderOptions options;
     options.video_path = default_video_path(scene.string(), out_directory);
-    render_one(scene.string(), options, overrides, progress);
+    exit_code = std::max(exit_code, render_one(scene.string(), options, overrides, progress));
   }
   std::fprintf(stderr, "rendered %zu scenes into %s/\n", scenes.size(), out_directory.c_str());
-  return 0;
+  return exit_code;
 }
 
 void add_set_option(CLI::App* command, std::vector<std::string>& settings) {
@@ -172,9 +186,9 @@ void add_video_options(CLI::App* command, VideoOverrides& overrides) {
 }  // namespace
 
 constexpr const char* kExitCodes =
-    "\nExit codes: 0 done; 1 the scene file or the command line is wrong (nothing written); 3 the output\n"
-    "cannot be written (nothing replaced, no temporary left); 4 anything else failed; 130 / 143\n"
-    "interrupted by SIGINT / SIGTERM.";
+    "\nExit codes: 0 done; 1 the scene file or the command line is wrong (nothing written); 2 a [[check]]\n"
+    "of the scene failed (outputs written); 3 the output cannot be written (nothing replaced, no temporary\n"
+    "left); 4 anything else failed; 130 / 143 interrupted by SIGINT / SIGTERM.";
 
 int main(int argc, char** argv) {
   CLI::App app{"impulse: rigid-body collision physics rendered into teaching videos, headless.\n"
@@ -238,10 +252,13 @@ int main(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "Read a scene file and report any error in it, without rendering");
   check->footer(std::string("\nExamples:\n"
                             "  impulse check assets/scenes/bounce.toml\n"
-                            "  impulse check scene.toml --set body[ball].restitution=1.2   # refused: e in [0, 1]\n") +
+                            "  impulse check scene.toml --set body[ball].restitution=1.2   # refused: e in [0, 1]\n"
+                            "  impulse check --simulate assets/scenes/bounce.toml          # its [[check]]s, measured\n") +
                 kExitCodes);
   std::vector<std::string> check_settings;
+  bool check_simulate = false;
   check->add_option("scene", scene_path, "Scene file (.toml)")->required();
+  check->add_flag("--simulate", check_simulate, "Also simulate the scene and report each of its [[check]]s");
   add_set_option(check, check_settings);
 
   try {
@@ -268,14 +285,19 @@ int main(int argc, char** argv) {
       if (trace.bodies_path.empty() && trace.contacts_path.empty() && trace.world_path.empty())
         throw std::invalid_argument("simulate writes CSV: give --trace, --contacts or --world (or several)");
       const demos::Scene scene = load(scene_path, simulate_settings);
-      const long steps = demos::simulate_scene(scene, trace);
+      std::vector<demos::CheckResult> checks;
+      const long steps = demos::simulate_scene(scene, trace, &checks);
       std::fprintf(stderr, "simulated %ld steps of %s\n", steps, scene_path.c_str());
-      return 0;
+      return report_checks(scene_path, checks);
     }
     if (*check) {
       const demos::Scene scene = load(scene_path, check_settings);
-      std::printf("%s: fine, %zu bodies, %.1f s\n", scene_path.c_str(), scene.bodies.size(), scene.duration);
-      return 0;
+      std::printf("%s: fine, %zu bodies, %.1f s, %zu checks\n", scene_path.c_str(), scene.bodies.size(), scene.duration,
+                  scene.checks.size());
+      if (!check_simulate) return 0;
+      std::vector<demos::CheckResult> checks;
+      demos::simulate_scene(scene, demos::TraceOptions{}, &checks);
+      return report_checks(scene_path, checks);
     }
   } catch (const std::exception& error) {
     return report(error);

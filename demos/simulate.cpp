@@ -48,7 +48,7 @@ std::string quoted(const std::string& text) {
 
 }  // namespace
 
-long simulate_scene(const Scene& scene, const TraceOptions& options) {
+long simulate_scene(const Scene& scene, const TraceOptions& options, std::vector<CheckResult>* checks) {
   std::optional<CsvFile> bodies = open_csv(
       options.bodies_path,
       "time_s,step,body,x_m,y_m,z_m,qw,qx,qy,qz,vx_m_per_s,vy_m_per_s,vz_m_per_s,wx_rad_per_s,wy_rad_per_s,wz_rad_per_s\n");
@@ -62,12 +62,15 @@ long simulate_scene(const Scene& scene, const TraceOptions& options) {
       "Ly_kg_m2_per_s,Lz_kg_m2_per_s\n");
 
   physics::World world = build_world(scene);
+  CheckWatch watch(scene.checks);
+  watch.start(world);
   const double duration = options.duration >= 0 ? options.duration : scene.duration;
   const int every = std::max(options.every, 1);
   auto name_of = [&](int body) { return body >= 0 ? quoted(world.bodies()[body].name) : std::string("world"); };
   long steps = 0;
   while (world.time() < duration - 0.5 * scene.world.time_step) {
     world.step();
+    watch.step(world);
     ++steps;
     const bool last = !(world.time() < duration - 0.5 * scene.world.time_step);
     if (steps % every != 0 && !last) continue;
@@ -98,6 +101,7 @@ long simulate_scene(const Scene& scene, const TraceOptions& options) {
   }
   for (std::optional<CsvFile>* file : {&bodies, &contacts, &world_csv})
     if (*file) (*file)->commit();
+  if (checks) *checks = watch.results();
   return steps;
 }
 

@@ -3,6 +3,7 @@
 // with its unit. Nothing is drawn or encoded, so it costs what the physics costs.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "demos/scene/scene_file.h"
 
@@ -18,6 +19,7 @@ struct TraceOptions {
 
 // Returns the steps taken. Throws render::OutputError when a file cannot be written; a file
 // appears under its name only when complete.
-long simulate_scene(const Scene& scene, const TraceOptions& options);
+// The [[check]]s' results go to `checks` when given.
+long simulate_scene(const Scene& scene, const TraceOptions& options, std::vector<CheckResult>* checks = nullptr);
 
 }  // namespace impulse::demos

@@ -177,6 +177,39 @@ TEST(Set, TheVideoRecordsTheSettings) {
   EXPECT_EQ(testing::decode_video(video.string()).comment, "--set world.friction=false");
 }
 
+// A head-on hit's momentum holds; a deliberately wrong check (the light sphere at rest) fails with
+// exit code 2, from `check --simulate` and from `render`, which still writes its video.
+TEST(Checks, AWrongCheckFailsWithItsExitCodeAndARightOnePasses) {
+  const fs::path dir = work_directory();
+  std::ofstream(dir / "checked.toml") << std::string(kHeadOn) + R"(
+[video]
+width = 160
+height = 120
+fps = 10
+[[check]]
+kind = "momentum"
+tolerance = 1e-9
+[[check]]
+kind = "at_rest"
+body = "light"
+from = 1.0
+speed = 0.01
+)";
+  const testing::ChildResult checked = impulse({"check", "--simulate", (dir / "checked.toml").string()});
+  EXPECT_EQ(checked.exit_code, 2) << checked.describe();
+  EXPECT_NE(checked.stderr_text.find("pass [[check]] 1 (momentum): changed by"), std::string::npos) << checked.stderr_text;
+  EXPECT_NE(checked.stderr_text.find("FAIL [[check]] 2 (at_rest of 'light'): fastest 1 m/s (below 0.01)"),
+            std::string::npos)
+      << checked.stderr_text;
+  const testing::ChildResult rendered =
+      impulse({"-q", "render", (dir / "checked.toml").string(), "-o", (dir / "checked.mp4").string()});
+  EXPECT_EQ(rendered.exit_code, 2) << rendered.describe();
+  EXPECT_TRUE(fs::exists(dir / "checked.mp4"));
+  const testing::ChildResult fixed = impulse(
+      {"check", "--simulate", (dir / "checked.toml").string(), "--set", "check[1].body=heavy", "--set", "check[1].speed=2.5"});
+  EXPECT_TRUE(fixed.succeeded()) << fixed.describe();
+}
+
 std::string contents(const fs::path& path) {
   std::ostringstream text;
   text << std::ifstream(path, std::ios::binary).rdbuf();

@@ -47,7 +47,7 @@ render::DrawList make_draw_list(const Scene& scene, const physics::World& world,
 // Three threads, each a stage: the simulation (and what each frame shows) runs ahead on its own
 // thread; this thread draws (with llvmpipe's threads); a worker paints the overlay and encodes.
 // Bounded queues between them keep memory flat whatever the video's length.
-void render_scene(const Scene& scene, const RenderOptions& options) {
+std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& options) {
   render::VideoSettings video = to_render(scene.video);
   for (const std::string& setting : scene.settings) {  // the video records the settings that changed it
     if (!video.comment.empty()) video.comment += ' ';
@@ -103,6 +103,7 @@ void render_scene(const Scene& scene, const RenderOptions& options) {
   }
   pipeline.finish();
   if (encoder) encoder->finish();
+  return film.check_results();
 }
 
 }  // namespace impulse::demos

@@ -27,8 +27,8 @@ struct RenderOptions {
 // interpolation, arrow scales of 1 m per unit unless the scene sets them): for tests and stills.
 render::DrawList make_draw_list(const Scene& scene, const physics::World& world, const physics::StepRecord& record);
 
-// Renders the whole scene. Throws on any failure; a video is complete under its final name or
-// absent.
-void render_scene(const Scene& scene, const RenderOptions& options);
+// Renders the whole scene and returns how its [[check]]s came out. Throws on any failure; a video
+// is complete under its final name or absent.
+std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& options);
 
 }  // namespace impulse::demos

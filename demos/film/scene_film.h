@@ -33,6 +33,7 @@ class SceneFilm {
   SceneFilm(const Scene& scene, int width, int height);
 
   int frame_count() const { return int(moments_.size()); }
+  std::vector<CheckResult> check_results() const { return take_.check_results(); }
   int next_frame() const { return frame_; }
   // Fills `picture` with the next frame (from 0 up to frame_count() - 1).
   void next(ScenePicture& picture);

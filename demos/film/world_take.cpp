@@ -27,6 +27,7 @@ WorldTake::WorldTake(const Scene& scene)
       bodies_(world_.bodies()),
       contacts_drawn_(scene.draw.contact_points || scene.draw.contact_normals || scene.draw.impulses ||
                       scene.draw.friction),
+      checks_(scene.checks),
       plots_(scene.overlay.plots, plotted_body(bodies_, scene.overlay.plot_body)),
       hold_(scene.draw.contact_hold),
       before_(poses_of(bodies_)),
@@ -35,12 +36,14 @@ WorldTake::WorldTake(const Scene& scene)
     velocities_.push_back(body.velocity);
     awake_.push_back(body.awake);
   }
+  checks_.start(world_);
 }
 
 bool WorldTake::finished() const { return !(world_.time() < scene_.duration + 0.5 * scene_.world.time_step); }
 
 void WorldTake::step() {
   world_.step();
+  checks_.step(world_);
   const physics::StepRecord& record = world_.record();
   const auto& bodies = world_.bodies();
   if (needs_summary(scene_)) {

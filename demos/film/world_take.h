@@ -37,6 +37,7 @@ class WorldTake {
   void sample(double time, double video_time, FrameSample& sample);
 
   const TakeSummary& summary() const { return summary_; }
+  std::vector<CheckResult> check_results() const { return checks_.results(); }  // the scene's [[check]]s
   const PlotRecorder& plots() const { return plots_; }
   // The bodies as built (shapes, names, masses; their motion is in the samples) and the joints.
   const std::vector<physics::Body>& bodies() const { return bodies_; }
@@ -57,6 +58,7 @@ class WorldTake {
   std::vector<physics::Body> bodies_;
   bool contacts_drawn_ = false;
   TakeSummary summary_;
+  CheckWatch checks_;
   PlotRecorder plots_;
   std::deque<Step> pending_;  // stepped, not yet taken by a frame
   ContactHold hold_;

@@ -1,6 +1,7 @@
 // Scene files (TOML): the world, its bodies, the camera and the video, as a lecturer writes them.
 // The format is described in README.md, "Scene files".
 #pragma once
+#include "demos/scene/scene_checks.h"
 #include "demos/scene/view_options.h"
 #include "physics/world.h"
 
@@ -46,6 +47,7 @@ struct Scene {
   OverlayOptions overlay;
   std::vector<CaptionCue> captions;
   PlaybackOptions playback;
+  std::vector<CheckSpec> checks;  // [[check]]: what must hold
 };
 
 // `settings` are --set KEY=VALUE arguments (scene_overrides.h), applied over the file.
