@@ -6,6 +6,7 @@
 #include "demos/scene/scene_world.h"
 #include "demos/scene/video_quality.h"
 #include "demos/simulate.h"
+#include "demos/verify.h"
 
 #include <CLI/CLI.hpp>
 
@@ -187,7 +188,7 @@ void add_video_options(CLI::App* command, VideoOverrides& overrides) {
 
 constexpr const char* kExitCodes =
     "\nExit codes: 0 done; 1 the scene file or the command line is wrong (nothing written); 2 a [[check]]\n"
-    "of the scene failed (outputs written); 3 the output cannot be written (nothing replaced, no temporary\n"
+    "of the scene or a golden frame (verify) failed (outputs written); 3 the output cannot be written (nothing replaced, no temporary\n"
     "left); 4 anything else failed; 130 / 143 interrupted by SIGINT / SIGTERM.";
 
 int main(int argc, char** argv) {
@@ -249,6 +250,22 @@ int main(int argc, char** argv) {
   simulate->add_option("--world", trace.world_path, "CSV: a row per step (energies, linear and angular momentum)");
   add_set_option(simulate, simulate_settings);
 
+  auto* verify = app.add_subcommand("verify", "Render chosen frames and compare them with golden PNGs (visual regression)");
+  verify->footer(std::string("\nExamples:\n"
+                             "  impulse verify my_course/drop.toml --golden my_course/golden/drop --update   # make the goldens\n"
+                             "  impulse verify my_course/drop.toml --golden my_course/golden/drop            # compare with them\n"
+                             "  impulse verify scene.toml --golden golden/ --frames 0,45,90\n") +
+                 kExitCodes);
+  demos::VerifyOptions verify_options;
+  std::string verify_frames;
+  VideoOverrides verify_overrides;
+  verify->add_option("scene", scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
+  verify->add_option("--golden", verify_options.golden_directory, "Directory of golden frames (frame_00000.png, ...)")
+      ->required();
+  verify->add_option("--frames", verify_frames, "Frames to compare, numbered from 0 (default: first, middle and last)");
+  verify->add_flag("--update", verify_options.update, "Write the rendered frames as the goldens instead of comparing");
+  add_video_options(verify, verify_overrides);
+
   auto* check = app.add_subcommand("check", "Read a scene file and report any error in it, without rendering");
   check->footer(std::string("\nExamples:\n"
                             "  impulse check assets/scenes/bounce.toml\n"
@@ -281,6 +298,16 @@ int main(int argc, char** argv) {
       return render_one(scene_path, options, render_overrides, progress);
     }
     if (*catalogue) return render_catalogue(scenes_directory, out_directory, progress, catalogue_overrides);
+    if (*verify) {
+      demos::Scene scene = load(scene_path, verify_overrides.settings);
+      demos::RenderOptions options;
+      verify_overrides.apply(scene, options);
+      if (!verify_frames.empty()) verify_options.frames = parse_frames(verify_frames);
+      const demos::VerifyResult result = demos::verify_scene(scene, options, verify_options);
+      for (const std::string& line : result.lines) std::fprintf(stderr, "%s: %s\n", scene_path.c_str(), line.c_str());
+      const int checks = report_checks(scene_path, result.checks);
+      return result.passed ? checks : kExitCheckFailed;
+    }
     if (*simulate) {
       if (trace.bodies_path.empty() && trace.contacts_path.empty() && trace.world_path.empty())
         throw std::invalid_argument("simulate writes CSV: give --trace, --contacts or --world (or several)");

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "render/image_compare.h"
 #include "render/png_io.h"
 
 namespace impulse::testing {
@@ -17,18 +18,6 @@ const fs::path kFailureDirectory = "out/golden";
 bool updating() {
   const char* update = std::getenv("IMPULSE_UPDATE_GOLDEN");
   return update != nullptr && std::string(update) == "1";
-}
-
-// The golden faded towards white, with the differing pixels in red.
-render::Frame diff_image(const render::Frame& golden, const render::Frame& actual, int threshold) {
-  render::Frame diff = golden;
-  for (size_t i = 0; i < diff.rgba.size(); i += 4) {
-    bool differs = false;
-    for (int c = 0; c < 3; ++c) differs |= std::abs(int(golden.rgba[i + c]) - int(actual.rgba[i + c])) > threshold;
-    for (int c = 0; c < 3; ++c) diff.rgba[i + c] = differs ? (c == 0 ? 255 : 0) : uint8_t(191 + golden.rgba[i + c] / 4);
-    diff.rgba[i + 3] = 255;
-  }
-  return diff;
 }
 
 }  // namespace
@@ -58,25 +47,13 @@ GoldenResult compare_with_golden(const std::string& name, const render::Frame& a
     return {false, golden_path.string() + " is " + std::to_string(golden.width) + "x" + std::to_string(golden.height) +
                        " but the render is " + std::to_string(actual.width) + "x" + std::to_string(actual.height)};
   }
-  size_t differing = 0;
-  for (size_t i = 0; i < golden.rgba.size(); i += 4) {
-    for (int c = 0; c < 3; ++c) {
-      if (std::abs(int(golden.rgba[i + c]) - int(actual.rgba[i + c])) > tolerance.pixel_threshold) {
-        ++differing;
-        break;
-      }
-    }
-  }
-  const double share = double(differing) / double(golden.rgba.size() / 4);
-  if (share <= tolerance.max_differing_share) return {true, ""};
+  const render::ImageDifference difference = render::compare_images(golden, actual, tolerance);
+  if (difference.matches) return {true, ""};
 
   keep_actual();
   const fs::path diff_path = kFailureDirectory / (name + ".diff.png");
-  render::write_png(diff_path.string(), diff_image(golden, actual, tolerance.pixel_threshold));
-  char summary[160];
-  std::snprintf(summary, sizeof summary, "%.2f %% of the pixels differ by more than %d (allowed: %.2f %%)", 100 * share,
-                tolerance.pixel_threshold, 100 * tolerance.max_differing_share);
-  return {false, "golden " + name + ": " + summary + "; see " + fs::absolute(diff_path).string() + " and " +
+  render::write_png(diff_path.string(), render::difference_image(golden, actual, tolerance.pixel_threshold));
+  return {false, "golden " + name + ": " + difference.summary + "; see " + fs::absolute(diff_path).string() + " and " +
                      fs::absolute(actual_path).string() + " (if the new look is meant, IMPULSE_UPDATE_GOLDEN=1 ctest -R Golden)"};
 }
 

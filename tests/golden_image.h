@@ -9,13 +9,11 @@
 #include <string>
 
 #include "render/frame.h"
+#include "render/image_compare.h"
 
 namespace impulse::testing {
 
-struct GoldenTolerance {
-  int pixel_threshold = 24;
-  double max_differing_share = 0.005;  // 0.5 %
-};
+using GoldenTolerance = render::ImageTolerance;  // render/image_compare.h
 
 struct GoldenResult {
   bool passed = false;

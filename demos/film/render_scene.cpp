@@ -25,19 +25,24 @@ namespace {
 constexpr int kFramesInFlight = 3;  // drawn, being finished, waiting: enough to keep both busy
 constexpr size_t kPicturesAhead = 2;  // frames the simulation may run ahead of the drawing
 
-std::string frame_file(const std::string& directory, int64_t index) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%05lld.png", static_cast<long long>(index));
-  return (std::filesystem::path(directory) / name).string();
-}
-
-bool wants_png(const RenderOptions& options, int64_t index) {
+bool wants_png(const RenderOptions& options, int64_t index, int frame_count) {
   if (options.png_directory.empty()) return false;
+  if (options.png_frames.empty() && options.png_spread > 1) {
+    for (int k = 0; k < options.png_spread; ++k)
+      if (index == int64_t(k) * (frame_count - 1) / (options.png_spread - 1)) return true;
+    return false;
+  }
   return options.png_frames.empty() ||
          std::find(options.png_frames.begin(), options.png_frames.end(), index) != options.png_frames.end();
 }
 
 }  // namespace
+
+std::string frame_file(const std::string& directory, int64_t index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05lld.png", static_cast<long long>(index));
+  return (std::filesystem::path(directory) / name).string();
+}
 
 render::DrawList make_draw_list(const Scene& scene, const physics::World& world, const physics::StepRecord& record) {
   return scene_draw_list(scene, world.bodies(), poses_of(world.bodies()), world.joints(), record.contacts,
@@ -66,7 +71,7 @@ std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& o
   std::atomic<int> frames_finished{0};
   FramePipeline pipeline(kFramesInFlight, [&](FrameJob& job) {
     painter.paint(job.overlay, job.frame);
-    if (wants_png(options, job.index)) render::write_png(frame_file(options.png_directory, job.index), job.frame);
+    if (wants_png(options, job.index, film.frame_count())) render::write_png(frame_file(options.png_directory, job.index), job.frame);
     if (encoder) encoder->add_frame(job.frame);
     ++frames_finished;
   });

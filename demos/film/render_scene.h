@@ -18,6 +18,7 @@ struct RenderOptions {
   std::string video_path;        // .mp4; empty: no video
   std::string png_directory;     // empty: no PNG frames
   std::vector<int> png_frames;   // which frames become PNGs (numbered from 0); empty: all
+  int png_spread = 0;            // > 1 (and no png_frames): that many, evenly from the first to the last
   // Called after each frame is drawn, with the frames finished and the frame count.
   std::function<void(int frames_done, int frame_count)> progress;
   render::RendererSettings renderer;
@@ -30,5 +31,8 @@ render::DrawList make_draw_list(const Scene& scene, const physics::World& world,
 // Renders the whole scene and returns how its [[check]]s came out. Throws on any failure; a video
 // is complete under its final name or absent.
 std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& options);
+
+// The name a frame's PNG gets: DIRECTORY/frame_00042.png.
+std::string frame_file(const std::string& directory, int64_t index);
 
 }  // namespace impulse::demos
