@@ -1,6 +1,6 @@
 // A heap of 1000 bouncing boxes (the benchmark's scene, restitution 0.5): no body is ever thrown.
 #include "physics/world.h"
-#include "tests/bench/physics_scenes.h"
+#include "tests/bench_world.h"
 
 #include <gtest/gtest.h>
 
@@ -15,20 +15,9 @@ namespace {
 // Energy can only leave a heap with e < 1: it may never rise above its start (1 % for the soft
 // contacts' rounding), and nothing may move faster than falling from the top layer (19.6 m/s).
 TEST(Heap, ThousandBouncingBoxesNeverThrowABody) {
-  const bench::Scene scene = bench::make_scene("boxes");
   WorldSettings settings;
   settings.sleep.enabled = true;
-  World world(settings);
-  for (const bench::BodySpec& spec : scene.bodies) {
-    BodyDef def;
-    def.shape = spec.kind == bench::Kind::box ? Shape::box({spec.half.x, spec.half.y, spec.half.z}) : Shape::sphere(spec.radius);
-    def.is_static = spec.is_static;
-    def.mass = 1;
-    def.material = {0.5, 0.5};
-    def.position = {spec.position.x, spec.position.y, spec.position.z};
-    def.orientation = Quat(spec.orientation.w, spec.orientation.x, spec.orientation.y, spec.orientation.z);
-    world.add_body(def);
-  }
+  World world = test::bench_world("boxes", settings, {0.5, 0.5});
   const Real start = world.record().kinetic_energy + world.record().potential_energy;
   Real most_energy = start, fastest = 0;
   for (int step = 0; step < 25 * 60; ++step) {

@@ -2,7 +2,7 @@
 // minute with nothing non-finite, nothing through the ground and no energy from nowhere; a 100:1
 // mass ratio stack; a fast sphere against a thin wall; a box resting for 10 000 steps.
 #include "physics/world.h"
-#include "tests/bench/physics_scenes.h"
+#include "tests/bench_world.h"
 #include "tests/physics_test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -17,21 +17,9 @@ using namespace test;
 
 // SCENES.md's heap of 1000 boxes or of 1000 spheres, sleeping off, materials as the benchmark's.
 World heap(const std::string& name) {
-  const bench::Scene scene = bench::make_scene(name);
   WorldSettings settings;
   settings.sleep.enabled = false;
-  World world(settings);
-  for (const bench::BodySpec& spec : scene.bodies) {
-    BodyDef def;
-    def.shape = spec.kind == bench::Kind::box ? Shape::box({spec.half.x, spec.half.y, spec.half.z}) : Shape::sphere(spec.radius);
-    def.is_static = spec.is_static;
-    def.mass = 1;
-    def.material = {0.0, 0.5};
-    def.position = {spec.position.x, spec.position.y, spec.position.z};
-    def.orientation = Quat(spec.orientation.w, spec.orientation.x, spec.orientation.y, spec.orientation.z);
-    world.add_body(def);
-  }
-  return world;
+  return bench_world(name, settings, {0.0, 0.5});
 }
 
 class LongRun : public ::testing::TestWithParam<const char*> {};
