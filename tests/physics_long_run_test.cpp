@@ -1,4 +1,4 @@
-// Long runs and extreme but valid scenes (issue 16): the heaps of ../shared/bench/SCENES.md for a
+// Long runs and extreme but valid scenes: the heaps of ../shared/bench/SCENES.md for a
 // minute with nothing non-finite, nothing through the ground and no energy from nowhere; a 100:1
 // mass ratio stack; a fast sphere against a thin wall; a box resting for 10 000 steps.
 #include "physics/world.h"

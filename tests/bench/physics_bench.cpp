@@ -241,7 +241,7 @@ const char* verdict(const Outcome& o, EngineId e) {
 }
 
 void print_goals(const std::vector<Outcome>& outcomes) {
-  // Issue 4's goal is against Bullet; Box3D's figures stand beside it (no goal against it yet).
+  // The goal is against Bullet; Box3D's figures stand beside it (no goal against it yet).
   std::printf("\nGoal 1: impulse's median ms/step <= 0.8x Bullet's, sleeping off (Box3D's beside it)\n");
   for (const char* scene : {"boxes", "spheres", "pyramid", "large-pyramid"}) {
     const Outcome* o = find(outcomes, scene, false, EngineId::bullet);
