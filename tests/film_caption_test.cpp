@@ -95,6 +95,47 @@ position = [0, 0.3, -2]
   }
 }
 
+// Beside the video, a WebVTT track with the cues in video time: at real time, as simulated; in
+// slow motion (a fifth of real time around an impact), stretched.
+TEST(Overlay, TheCaptionsTrackHasTheCuesInVideoTime) {
+  const fs::path dir = fs::temp_directory_path() / "impulse_captions_track_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string scene_text = R"(
+[scene]
+duration = 1.2
+[video]
+width = 160
+height = 120
+fps = 10
+[[caption]]
+text = "Momentum is kept"
+start = 0.4
+end = 0.8
+[[body]]
+shape = "plane"
+[[body]]
+shape = "sphere"
+radius = 0.3
+position = [0, 0.3, -2]
+)";
+  std::ofstream(dir / "real_time.toml") << scene_text;
+  demos::RenderOptions options;
+  options.video_path = (dir / "real_time.mp4").string();
+  demos::render_scene(demos::load_scene((dir / "real_time.toml").string()), options);
+  std::ifstream real_time(dir / "real_time.vtt");
+  const std::string track((std::istreambuf_iterator<char>(real_time)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(track, "WEBVTT\n\n1\n00:00:00.400 --> 00:00:00.800\nMomentum is kept\n");
+
+  std::ofstream(dir / "slow.toml") << scene_text << "[playback]\nspeed = 0.2\n";
+  options.video_path = (dir / "slow.mp4").string();
+  demos::render_scene(demos::load_scene((dir / "slow.toml").string()), options);
+  std::ifstream slow(dir / "slow.vtt");
+  const std::string slow_track((std::istreambuf_iterator<char>(slow)), std::istreambuf_iterator<char>());
+  EXPECT_NE(slow_track.find("00:00:02.000 --> 00:00:04.000"), std::string::npos) << slow_track;
+  fs::remove_all(dir);
+}
+
 TEST(Overlay, CaptionsFadeInsideTheirCue) {
   const std::vector<demos::CaptionCue> cues = {{"a", 1.0, 2.0}, {"b", 1.5, 3.0}};
   EXPECT_TRUE(demos::captions_at(cues, 0.99).empty());

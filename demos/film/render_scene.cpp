@@ -7,10 +7,13 @@
 #include "demos/film/frame_pipeline.h"
 #include "demos/film/handoff_queue.h"
 #include "render/overlay_painter.h"
+#include "render/part_file.h"
 #include "render/png_io.h"
 #include "render/video_encoder.h"
 
 #include <algorithm>
+#include <cmath>
+#include <fstream>
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
@@ -34,6 +37,41 @@ bool wants_png(const RenderOptions& options, int64_t index, int frame_count) {
   }
   return options.png_frames.empty() ||
          std::find(options.png_frames.begin(), options.png_frames.end(), index) != options.png_frames.end();
+}
+
+}  // namespace
+
+std::string captions_path(const std::string& video_path) {
+  return std::filesystem::path(video_path).replace_extension(".vtt").string();
+}
+
+namespace {
+
+std::string vtt_time(double seconds) {
+  const long long millis = std::llround(std::max(seconds, 0.0) * 1000);
+  char text[32];
+  std::snprintf(text, sizeof text, "%02lld:%02lld:%02lld.%03lld", millis / 3600000, millis / 60000 % 60,
+                millis / 1000 % 60, millis % 1000);
+  return text;
+}
+
+// WebVTT: each [[caption]] as a cue in video time (slow motion stretches it), written as
+// NAME.vtt.part and renamed when complete.
+void write_captions(const Scene& scene, const SceneFilm& film, const std::string& path) {
+  render::PartFile part(path);
+  {
+    std::ofstream file(part.part_path());
+    file << "WEBVTT\n";
+    int cue = 0;
+    for (const CaptionCue& caption : scene.captions) {
+      const double start = film.video_time_of(caption.start), end = film.video_time_of(caption.end);
+      if (!(end > start)) continue;
+      file << "\n" << ++cue << "\n" << vtt_time(start) << " --> " << vtt_time(end) << "\n" << caption.text << "\n";
+    }
+    file.close();
+    if (!file) throw render::OutputError("cannot write " + part.part_path());
+  }
+  part.commit();
 }
 
 }  // namespace
@@ -108,6 +146,7 @@ std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& o
   }
   pipeline.finish();
   if (encoder) encoder->finish();
+  if (encoder && !scene.captions.empty()) write_captions(scene, film, captions_path(options.video_path));
   return film.check_results();
 }
 

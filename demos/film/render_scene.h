@@ -32,6 +32,9 @@ render::DrawList make_draw_list(const Scene& scene, const physics::World& world,
 // is complete under its final name or absent.
 std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& options);
 
+// The captions track written beside a video: NAME.mp4 -> NAME.vtt.
+std::string captions_path(const std::string& video_path);
+
 // The name a frame's PNG gets: DIRECTORY/frame_00042.png.
 std::string frame_file(const std::string& directory, int64_t index);
 

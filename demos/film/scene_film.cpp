@@ -1,5 +1,7 @@
 #include "demos/film/scene_film.h"
 
+#include <algorithm>
+
 namespace impulse::demos {
 
 SceneFilm::SceneFilm(const Scene& scene, int width, int height)
@@ -31,6 +33,11 @@ void SceneFilm::shoot(int /*width*/, int /*height*/) {
     more = shown && timeline.shows(time) && moments_.size() < 10'000'000;
   }
   while (!take_.finished()) take_.step();  // the summary covers the whole duration
+}
+
+double SceneFilm::video_time_of(double time) const {
+  const auto shown = std::find_if(moments_.begin(), moments_.end(), [&](const Moment& m) { return m.time >= time - 1e-9; });
+  return double(shown - moments_.begin()) / scene_.video.fps;
 }
 
 void SceneFilm::next(ScenePicture& picture) {

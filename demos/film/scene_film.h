@@ -33,6 +33,9 @@ class SceneFilm {
   SceneFilm(const Scene& scene, int width, int height);
 
   int frame_count() const { return int(moments_.size()); }
+  // Seconds into the video at which simulated time `time` is first shown (slow motion included);
+  // the video's length for a time past the last frame.
+  double video_time_of(double time) const;
   std::vector<CheckResult> check_results() const { return take_.check_results(); }
   int next_frame() const { return frame_; }
   // Fills `picture` with the next frame (from 0 up to frame_count() - 1).
