@@ -143,6 +143,7 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
   for (const fs::path& scene : scenes) {
     demos::RenderOptions options;
     options.video_path = default_video_path(scene.string(), out_directory);
+    options.poster_path = demos::poster_path(options.video_path);
     exit_code = std::max(exit_code, render_one(scene.string(), options, overrides, progress));
   }
   std::fprintf(stderr, "rendered %zu scenes into %s/\n", scenes.size(), out_directory.c_str());

@@ -2,13 +2,13 @@
 // rate, the colours where a known body and the background are, and an impulse arrow where the
 // contact is. Scenes are small (320x240, one second) to keep CI short.
 #include "demos/film/render_scene.h"
+#include "demos/film/render_types.h"
 #include "demos/scene/scene_file.h"
 #include "render/camera_view.h"
+#include "render/image_compare.h"
 #include "render/png_io.h"
-#include "tests/video_decode.h"
-
-#include "demos/film/render_types.h"
 #include "tests/scene_scratch.h"
+#include "tests/video_decode.h"
 
 #include <gtest/gtest.h>
 
@@ -147,6 +147,24 @@ TEST(RenderVideo, SlowMotionAroundAnImpactAddsFrames) {
   demos::render_scene(scene, options);
   const testing::DecodedVideo video = testing::decode_video(options.video_path);
   EXPECT_GT(video.frames.size(), 40u) << "the impact (J = 1 kg x 1.7 x 4.4 m/s) should slow playback";
+}
+
+// The poster beside a video is one of its frames: with no impact to slow the video, the middle one.
+TEST(RenderVideo, ThePosterIsTheMiddleFrameWithoutImpacts) {
+  const fs::path dir = scratch("poster");
+  std::string text = resting_ball(kNoMarks);
+  const std::string rest = "position = [0, 0.5, 0]";
+  text.replace(text.find(rest), rest.size(), "position = [0, 2.5, 0]");  // falling: every frame differs
+  const demos::Scene scene = scene_from(dir, text);
+  demos::RenderOptions options;
+  options.video_path = (dir / "fall.mp4").string();
+  options.poster_path = demos::poster_path(options.video_path);
+  demos::render_scene(scene, options);
+  const render::Frame poster = render::read_png((dir / "fall.png").string());
+  const testing::DecodedVideo video = testing::decode_video(options.video_path);
+  ASSERT_EQ(video.frames.size(), 30u);
+  EXPECT_TRUE(render::compare_images(video.frames[15], poster).matches);
+  EXPECT_FALSE(render::compare_images(video.frames[0], poster).matches);
 }
 
 }  // namespace

@@ -45,6 +45,10 @@ std::string captions_path(const std::string& video_path) {
   return std::filesystem::path(video_path).replace_extension(".vtt").string();
 }
 
+std::string poster_path(const std::string& video_path) {
+  return std::filesystem::path(video_path).replace_extension(".png").string();
+}
+
 namespace {
 
 std::string vtt_time(double seconds) {
@@ -102,6 +106,7 @@ std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& o
   SceneFilm film(scene, video.width, video.height);
   render::Renderer renderer(video.width, video.height, options.renderer);
   if (!options.png_directory.empty()) std::filesystem::create_directories(options.png_directory);
+  const int poster = film.poster_frame();
 
   // The worker finishes frames in order: overlay, PNG, encoder. Declared after the encoder, so
   // it stops before the encoder (and its .part file) goes.
@@ -110,6 +115,7 @@ std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& o
   FramePipeline pipeline(kFramesInFlight, [&](FrameJob& job) {
     painter.paint(job.overlay, job.frame);
     if (wants_png(options, job.index, film.frame_count())) render::write_png(frame_file(options.png_directory, job.index), job.frame);
+    if (!options.poster_path.empty() && job.index == poster) render::write_png(options.poster_path, job.frame);
     if (encoder) encoder->add_frame(job.frame);
     ++frames_finished;
   });

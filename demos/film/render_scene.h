@@ -19,6 +19,7 @@ struct RenderOptions {
   std::string png_directory;     // empty: no PNG frames
   std::vector<int> png_frames;   // which frames become PNGs (numbered from 0); empty: all
   int png_spread = 0;            // > 1 (and no png_frames): that many, evenly from the first to the last
+  std::string poster_path;       // .png of a frame where something happens (SceneFilm::poster_frame); empty: none
   // Called after each frame is drawn, with the frames finished and the frame count.
   std::function<void(int frames_done, int frame_count)> progress;
   render::RendererSettings renderer;
@@ -32,8 +33,9 @@ render::DrawList make_draw_list(const Scene& scene, const physics::World& world,
 // is complete under its final name or absent.
 std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& options);
 
-// The captions track written beside a video: NAME.mp4 -> NAME.vtt.
+// The captions track and the poster written beside a video: NAME.mp4 -> NAME.vtt, NAME.png.
 std::string captions_path(const std::string& video_path);
+std::string poster_path(const std::string& video_path);
 
 // The name a frame's PNG gets: DIRECTORY/frame_00042.png.
 std::string frame_file(const std::string& directory, int64_t index);

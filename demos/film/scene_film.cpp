@@ -1,6 +1,7 @@
 #include "demos/film/scene_film.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace impulse::demos {
 
@@ -8,6 +9,7 @@ SceneFilm::SceneFilm(const Scene& scene, int width, int height)
     : scene_(scene), take_(scene), camera_path_(scene), bodies_(take_.bodies()) {
   shoot(width, height);
   const TakeSummary summary = take_.summary();
+  impact_times_ = summary.impact_times;
   scales_ = arrow_scales(scene, summary);
   overlay_maker_.emplace(scene, summary, scales_, width, height);
 }
@@ -38,6 +40,12 @@ void SceneFilm::shoot(int /*width*/, int /*height*/) {
 double SceneFilm::video_time_of(double time) const {
   const auto shown = std::find_if(moments_.begin(), moments_.end(), [&](const Moment& m) { return m.time >= time - 1e-9; });
   return double(shown - moments_.begin()) / scene_.video.fps;
+}
+
+int SceneFilm::poster_frame() const {
+  if (impact_times_.empty()) return frame_count() / 2;
+  const int after = int(std::lround((video_time_of(impact_times_.front()) + 0.25) * scene_.video.fps));
+  return std::clamp(after, 0, frame_count() - 1);
 }
 
 void SceneFilm::next(ScenePicture& picture) {

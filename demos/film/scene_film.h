@@ -36,6 +36,9 @@ class SceneFilm {
   // Seconds into the video at which simulated time `time` is first shown (slow motion included);
   // the video's length for a time past the last frame.
   double video_time_of(double time) const;
+  // A frame where something happens, for a poster: a quarter second of video after the first
+  // impact that slows the video, else the middle frame.
+  int poster_frame() const;
   std::vector<CheckResult> check_results() const { return take_.check_results(); }
   int next_frame() const { return frame_; }
   // Fills `picture` with the next frame (from 0 up to frame_count() - 1).
@@ -55,6 +58,7 @@ class SceneFilm {
   std::vector<FrameSample> samples_;  // one per frame, released as next() uses it
   ArrowScales scales_;
   std::optional<FrameOverlay> overlay_maker_;
+  std::vector<double> impact_times_;
   CameraPath camera_path_;
   std::vector<physics::Body> bodies_;  // the take's, moved to each frame's sample
   int frame_ = 0;
