@@ -15,6 +15,8 @@ packages=(
   libgtest-dev                                    # tests
   libbullet-dev                                   # benchmark peer only
   ffmpeg                                          # benchmark peer only (render_bench's naive path); impulse never runs it
+  clang libclang-rt-14-dev                        # tests: the libFuzzer target (tests/fuzz; clang's fuzzer and sanitizer runtimes)
+  llvm                                            # tests: llvm-symbolizer, for the sanitizers' stack traces
 )
 
 missing=()
