@@ -75,7 +75,8 @@ toml::table& select(const std::string& argument, const std::string& list_name, t
                     const std::string& selector) {
   const bool digits = !selector.empty() && std::all_of(selector.begin(), selector.end(), ::isdigit);
   if (digits) {
-    const size_t index = std::stoul(selector);
+    // More digits than any list has tables would overflow the conversion: out of range too.
+    const size_t index = selector.size() > 9 ? list.size() : std::stoul(selector);
     if (index >= list.size())
       refuse(argument, "there " + std::string(list.size() == 1 ? "is 1 " : "are " + std::to_string(list.size()) + " ") +
                            "[[" + list_name + "]] table" + (list.size() == 1 ? "" : "s") + ", numbered from 0");
