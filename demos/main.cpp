@@ -3,6 +3,7 @@
 #include "demos/progress_bar.h"
 #include "demos/film/render_scene.h"
 #include "demos/scene/scene_file.h"
+#include "demos/scene/scene_overrides.h"
 #include "demos/scene/scene_world.h"
 #include "demos/scene/video_quality.h"
 #include "demos/simulate.h"
@@ -11,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -114,6 +116,20 @@ std::vector<int> parse_frames(const std::string& list) {
   return frames;
 }
 
+// The video (the default one in out/, made if need be) and the PNG frames asked for.
+demos::RenderOptions output_options(const std::string& video_path, const std::string& default_path,
+                                    const std::string& png_directory, const std::string& frame_list) {
+  demos::RenderOptions options;
+  options.video_path = video_path.empty() ? default_path : video_path;
+  options.png_directory = png_directory;
+  if (!frame_list.empty()) {
+    if (png_directory.empty()) throw std::invalid_argument("--frames chooses PNG frames: add --png DIR");
+    options.png_frames = parse_frames(frame_list);
+  }
+  if (video_path.empty()) fs::create_directories(fs::path(default_path).parent_path());
+  return options;
+}
+
 int render_one(const std::string& scene_path, demos::RenderOptions options, const VideoOverrides& overrides,
                bool progress) {
   demos::Scene scene = load(scene_path, overrides.settings);
@@ -125,6 +141,77 @@ int render_one(const std::string& scene_path, demos::RenderOptions options, cons
   if (!options.video_path.empty()) std::fprintf(stderr, "wrote %s\n", options.video_path.c_str());
   if (!options.png_directory.empty()) std::fprintf(stderr, "wrote frames to %s/\n", options.png_directory.c_str());
   return report_checks(scene_path, checks);
+}
+
+// The panes of `impulse compare`: one scene per --vary value, or one per scene file. Every pane
+// gets the first's camera, video, playback and duration.
+struct Comparison {
+  std::vector<std::string> paths;      // the scene file of each pane
+  std::vector<demos::Scene> scenes;
+  std::vector<demos::Pane> panes;
+};
+
+Comparison load_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
+                           const VideoOverrides& overrides, demos::RenderOptions& options) {
+  Comparison comparison;
+  std::vector<std::string> variants;
+  if (!vary.empty()) {
+    if (scene_paths.size() != 1) throw std::invalid_argument("--vary compares settings of one scene: give one scene file");
+    variants = demos::split_variants(vary);
+    if (variants.size() < 2 || variants.size() > 4)
+      throw std::invalid_argument("--vary " + vary + ": give two to four values, separated by commas");
+  } else if (scene_paths.size() < 2 || scene_paths.size() > 4) {
+    throw std::invalid_argument("compare shows two to four panes: give two to four scene files, or one and --vary KEY=V1,V2");
+  }
+  const size_t count = variants.empty() ? scene_paths.size() : variants.size();
+  comparison.scenes.reserve(count);  // the panes point at them
+  for (size_t i = 0; i < count; ++i) {
+    const std::string& path = variants.empty() ? scene_paths[i] : scene_paths[0];
+    std::vector<std::string> settings = overrides.settings;
+    if (!variants.empty()) settings.push_back(variants[i]);
+    demos::Scene& scene = comparison.scenes.emplace_back(load(path, settings));
+    if (i == 0) {
+      overrides.apply(scene, options);
+    } else {
+      const demos::Scene& first = comparison.scenes.front();
+      scene.camera = first.camera;
+      scene.camera_motion = first.camera_motion;
+      scene.video = first.video;
+      scene.playback = first.playback;
+      scene.duration = first.duration;
+    }
+    comparison.paths.push_back(path);
+    std::string label = variants.empty() ? fs::path(path).stem().string() : variants[i];
+    if (const size_t equals = label.find('='); !variants.empty()) label.replace(equals, 1, " = ");
+    comparison.panes.push_back({&scene, label});
+  }
+  return comparison;
+}
+
+std::string default_comparison_path(const std::vector<std::string>& scene_paths, const std::string& vary) {
+  std::string name = fs::path(scene_paths.front()).stem().string();
+  if (!vary.empty()) {
+    std::string key = vary.substr(0, vary.find('='));
+    std::replace_if(key.begin(), key.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+    name += "_" + key;
+  } else {
+    for (size_t i = 1; i < scene_paths.size(); ++i) name += "_vs_" + fs::path(scene_paths[i]).stem().string();
+  }
+  return (fs::path("out") / name).string() + ".mp4";
+}
+
+int render_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
+                      demos::RenderOptions options, const VideoOverrides& overrides, bool progress) {
+  Comparison comparison = load_comparison(scene_paths, vary, overrides, options);
+  demos::ProgressBar bar(progress, scene_paths.front());
+  options.progress = [&bar](int done, int total) { bar.update(done, total); };
+  const std::vector<std::vector<demos::CheckResult>> checks = demos::render_panes(comparison.panes, options);
+  bar.finish();
+  std::fprintf(stderr, "wrote %s\n", options.video_path.c_str());
+  int exit_code = 0;
+  for (size_t i = 0; i < checks.size(); ++i)
+    exit_code = std::max(exit_code, report_checks(comparison.paths[i] + " [" + comparison.panes[i].label + "]", checks[i]));
+  return exit_code;
 }
 
 int render_catalogue(const std::string& scenes_directory, const std::string& out_directory, bool progress,
@@ -199,6 +286,7 @@ int main(int argc, char** argv) {
   app.footer(std::string("\nExamples:\n"
                          "  impulse render assets/scenes/bounce.toml                  # -> out/bounce.mp4\n"
                          "  impulse render assets/scenes/ex1_friction_off.toml --set world.friction=true -o on.mp4\n"
+                         "  impulse compare assets/scenes/ex1_friction_off.toml --vary world.friction=false,true\n"
                          "  impulse simulate assets/scenes/bounce.toml --trace bodies.csv --world world.csv\n"
                          "  impulse catalogue -o out                                  # every scene of assets/scenes\n") +
              kExitCodes);
@@ -221,6 +309,28 @@ int main(int argc, char** argv) {
   render->add_option("--png", png_directory, "Also write frames as PNG (frame_00000.png, ...) into this directory");
   render->add_option("--frames", frame_list, "With --png: only these frames, numbered from 0, e.g. 0,45,90");
   add_video_options(render, render_overrides);
+
+  auto* compare = app.add_subcommand("compare", "Two to four settings or scenes side by side in one video, one pane each");
+  compare->footer(std::string("\nThe panes share the first scene's camera, video, playback and duration, and the same simulated\n"
+                              "time; each is labelled with what sets it apart; plots draw every pane's curve in its colour.\n"
+                              "\nExamples:\n"
+                              "  impulse compare assets/scenes/ex1_friction_off.toml --vary world.friction=false,true\n"
+                              "  impulse compare assets/scenes/s1_projection.toml --vary world.method=projection,impulse,penalty\n"
+                              "  impulse compare a.toml b.toml -o a_vs_b.mp4\n") +
+                  kExitCodes);
+  std::vector<std::string> compare_paths;
+  std::string vary, compare_video_path, compare_png_directory, compare_frame_list;
+  VideoOverrides compare_overrides;
+  compare->add_option("scenes", compare_paths, "Scene files (.toml): one with --vary, else two to four")
+      ->required()
+      ->check(CLI::ExistingFile);
+  compare->add_option("--vary", vary, "KEY=V1,V2[,V3[,V4]]: one pane per value of a scene field (as --set writes it)")
+      ->type_name("KEY=VALUES");
+  compare->add_option("-o,--output", compare_video_path,
+                      "Video to write (default: out/<scene>_<key>.mp4, or out/<a>_vs_<b>.mp4)");
+  compare->add_option("--png", compare_png_directory, "Also write frames as PNG (frame_00000.png, ...) into this directory");
+  compare->add_option("--frames", compare_frame_list, "With --png: only these frames, numbered from 0, e.g. 0,45,90");
+  add_video_options(compare, compare_overrides);
 
   auto* catalogue = app.add_subcommand("catalogue", "Render every scene of a directory into videos");
   catalogue->footer(std::string("\nExamples:\n"
@@ -288,15 +398,13 @@ int main(int argc, char** argv) {
   const bool progress = !quiet && (force_progress || isatty(STDERR_FILENO));
   try {
     if (*render) {
-      demos::RenderOptions options;
-      options.video_path = video_path.empty() ? default_video_path(scene_path, "out") : video_path;
-      options.png_directory = png_directory;
-      if (!frame_list.empty()) {
-        if (png_directory.empty()) throw std::invalid_argument("--frames chooses PNG frames: add --png DIR");
-        options.png_frames = parse_frames(frame_list);
-      }
-      if (video_path.empty()) fs::create_directories("out");
+      demos::RenderOptions options = output_options(video_path, default_video_path(scene_path, "out"), png_directory, frame_list);
       return render_one(scene_path, options, render_overrides, progress);
+    }
+    if (*compare) {
+      demos::RenderOptions options = output_options(compare_video_path, default_comparison_path(compare_paths, vary),
+                                                    compare_png_directory, compare_frame_list);
+      return render_comparison(compare_paths, vary, options, compare_overrides, progress);
     }
     if (*catalogue) return render_catalogue(scenes_directory, out_directory, progress, catalogue_overrides);
     if (*verify) {

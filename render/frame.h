@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/draw_list.h"
+
 namespace impulse::render {
 
 struct Frame {
@@ -10,5 +12,11 @@ struct Frame {
   int height = 0;
   std::vector<uint8_t> rgba;  // width * height * 4 bytes; row 0 is the top of the image
 };
+
+// `frame` made width x height, every pixel `colour` (opaque).
+void fill(Frame& frame, int width, int height, const Colour& colour);
+
+// Copies `pane` into `frame` with its top-left corner at (x, y); what falls outside is cut off.
+void paste(const Frame& pane, int x, int y, Frame& frame);
 
 }  // namespace impulse::render

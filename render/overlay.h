@@ -28,17 +28,23 @@ struct LegendEntry {
   bool dot = false;  // a dot instead of an arrow (contact points)
 };
 
+// One curve of a plot: (time s, value) points in time order, drawn in `colour`.
+struct PlotSeries {
+  Colour colour;
+  std::vector<Vec2f> points;
+};
+
 // A small line plot that grows as the video plays: x is simulated time from 0 to `x_end`.
 // The y range is fixed when y_max > y_min (a plot that keeps its scale reads best), else it
-// follows the points.
+// follows the points. Several series share the axes (a comparison: one per variant, in its
+// colour); the heading ends with each series' latest value, in its colour.
 struct Plot {
   std::string title;   // e.g. "kinetic energy"
   std::string unit;    // e.g. "J"
-  Colour colour;
-  float x_end = 1.0f;  // s: the right edge, so the curve grows towards it
+  float x_end = 1.0f;  // s: the right edge, so the curves grow towards it
   float y_min = 0.0f;
   float y_max = 0.0f;
-  std::vector<Vec2f> points;  // (time s, value), in time order
+  std::vector<PlotSeries> series;
 };
 
 // A caption line; `opacity` in [0, 1] lets it fade in and out at the ends of its time cue.
@@ -55,7 +61,8 @@ struct Overlay {
   std::string playback;               // under the clock, e.g. "slow motion ×0.25"; empty: none
   bool playback_highlight = false;    // draw `playback` in bold vermillion (slow motion is on)
   std::vector<LegendEntry> legend;    // under the title
-  std::vector<Plot> plots;            // a column at the right
+  std::vector<Plot> plots;            // a column at the right, or a row (plots_row_top)
+  float plots_row_top = -1.0f;        // >= 0: the plots in a centred row from this y down instead
 
   bool empty() const {
     return title.empty() && captions.empty() && labels.empty() && clock.empty() && playback.empty() &&

@@ -220,12 +220,17 @@ void OverlayPainter::Cairo::clock(const Overlay& overlay, double& bottom) {
 void OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
   cairo_t* cr = context.get();
   const double margin = 20 * scale, gap = 10 * scale;
-  const double plot_width = 270 * scale, plot_height = 88 * scale, pad = 9 * scale;
+  const double plot_height = 88 * scale, pad = 9 * scale;
   const double title_size = 13 * scale;
-  double y = top + gap;
+  const bool row = overlay.plots_row_top >= 0;
+  // A row shares the frame's width, each plot between 270 and 380 (at 720 lines) wide.
+  const double share = (width - 2 * margin - (double(overlay.plots.size()) - 1) * gap) / std::max<size_t>(overlay.plots.size(), 1);
+  const double plot_width = row ? std::clamp(share, 270 * scale, 380 * scale) : 270 * scale;
+  const double row_width = overlay.plots.size() * (plot_width + gap) - gap;
+  double x = row ? std::max(margin, (width - row_width) / 2) : width - margin - plot_width;
+  double y = row ? overlay.plots_row_top : top + gap;
   for (const Plot& plot : overlay.plots) {
-    if (y + plot_height > height - margin) break;  // no room left in the column
-    const double x = width - margin - plot_width;
+    if (y + plot_height > height - margin || x + plot_width > width) break;  // no room left
     panel(cr, x, y, plot_width, plot_height, 8 * scale, 0.85);
     mark(x, y, plot_width, plot_height);
 
@@ -234,12 +239,17 @@ void OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
     const std::string heading = plot.unit.empty() ? plot.title : plot.title + " (" + plot.unit + ")";
     cairo_move_to(cr, x + pad, y + pad + title_size * 0.8);
     cairo_show_text(cr, heading.c_str());
-    if (!plot.points.empty()) {
-      const std::string value = three_figures(plot.points.back().y());  // the unit is in the heading
-      set_font(cr, title_size, true, true);
-      set_colour(cr, plot.colour);
-      cairo_move_to(cr, x + plot_width - pad - text_width(cr, value), y + pad + title_size * 0.8);
+    // The latest values, right-aligned, the last series rightmost (the unit is in the heading).
+    set_font(cr, title_size, true, true);
+    double value_right = x + plot_width - pad;
+    for (auto series = plot.series.rbegin(); series != plot.series.rend(); ++series) {
+      if (series->points.empty()) continue;
+      const std::string value = three_figures(series->points.back().y());
+      value_right -= text_width(cr, value);
+      set_colour(cr, series->colour);
+      cairo_move_to(cr, value_right, y + pad + title_size * 0.8);
       cairo_show_text(cr, value.c_str());
+      value_right -= 0.6 * title_size;
     }
 
     const double left = x + pad, right = x + plot_width - pad;
@@ -248,10 +258,11 @@ void OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
     if (!(y_max > y_min)) {
       y_min = 0;
       y_max = 0;
-      for (const Vec2f& p : plot.points) {
-        y_min = std::min(y_min, double(p.y()));
-        y_max = std::max(y_max, double(p.y()));
-      }
+      for (const PlotSeries& series : plot.series)
+        for (const Vec2f& p : series.points) {
+          y_min = std::min(y_min, double(p.y()));
+          y_max = std::max(y_max, double(p.y()));
+        }
       if (!(y_max > y_min)) y_max = y_min + 1;
       y_max += 0.1 * (y_max - y_min);
     }
@@ -269,17 +280,22 @@ void OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
     cairo_line_to(cr, left, area_bottom);
     cairo_stroke(cr);
 
-    if (!plot.points.empty()) {
+    for (const PlotSeries& series : plot.series) {
+      if (series.points.empty()) continue;
       cairo_set_line_width(cr, 2.0 * scale);
       cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-      set_colour(cr, plot.colour);
-      cairo_move_to(cr, to_x(plot.points.front().x()), to_y(plot.points.front().y()));
-      for (const Vec2f& p : plot.points) cairo_line_to(cr, to_x(p.x()), to_y(p.y()));
+      set_colour(cr, series.colour);
+      cairo_move_to(cr, to_x(series.points.front().x()), to_y(series.points.front().y()));
+      for (const Vec2f& p : series.points) cairo_line_to(cr, to_x(p.x()), to_y(p.y()));
       cairo_stroke(cr);
-      cairo_arc(cr, to_x(plot.points.back().x()), to_y(plot.points.back().y()), 3.5 * scale, 0, 2 * M_PI);
+      cairo_arc(cr, to_x(series.points.back().x()), to_y(series.points.back().y()), 3.5 * scale, 0, 2 * M_PI);
       cairo_fill(cr);
     }
-    y += plot_height + gap;
+    if (row) {
+      x += plot_width + gap;
+    } else {
+      y += plot_height + gap;
+    }
   }
 }
 

@@ -181,9 +181,9 @@ TEST(Plots, SeriesStayBoundedAndKeepTheirMaximum) {
   }
   const std::vector<render::Plot> shown = plots.plots(plots.steps(), 600, plots.maxima(), "");
   ASSERT_EQ(shown.size(), 1u);
-  EXPECT_LE(shown[0].points.size(), 2048u);
-  EXPECT_GE(shown[0].points.size(), 1024u);
-  EXPECT_NEAR(shown[0].points.back().x(), 600.0, 1.0);
+  EXPECT_LE(shown[0].series[0].points.size(), 2048u);
+  EXPECT_GE(shown[0].series[0].points.size(), 1024u);
+  EXPECT_NEAR(shown[0].series[0].points.back().x(), 600.0, 1.0);
   EXPECT_DOUBLE_EQ(plots.maxima()[0], 99.0);
 }
 

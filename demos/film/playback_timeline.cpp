@@ -26,7 +26,9 @@ PlaybackTimeline::PlaybackTimeline(const PlaybackOptions& options, const std::ve
   std::sort(impact_times_.begin(), impact_times_.end());
 }
 
-void PlaybackTimeline::add_impact(double time) { impact_times_.push_back(time); }
+void PlaybackTimeline::add_impact(double time) {
+  impact_times_.insert(std::upper_bound(impact_times_.begin(), impact_times_.end(), time), time);
+}
 
 // speed_at(t) reads the impacts within the window and the ease of t; the next frame's time reads
 // it half a frame on.

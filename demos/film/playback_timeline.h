@@ -17,7 +17,7 @@ class PlaybackTimeline {
   // The same with every impact known (simulated s: when an impact strong enough happened).
   PlaybackTimeline(const PlaybackOptions& options, const std::vector<double>& impact_times, double duration, int fps);
 
-  void add_impact(double time);  // in order of time
+  void add_impact(double time);  // in any order (several worlds' impacts interleave)
   double lookahead() const;      // s past a frame's moment that must be simulated before it is final
 
   double speed_at(double time) const;         // simulated s per video s at simulated `time`

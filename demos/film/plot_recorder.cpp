@@ -69,10 +69,11 @@ std::vector<render::Plot> PlotRecorder::plots(int64_t steps, double duration, co
     render::Plot plot;
     plot.title = plot_title(kinds_[i], body_name);
     plot.unit = plot_unit(kinds_[i]);
-    plot.colour = plot_colour(kinds_[i]);
+    render::PlotSeries& series = plot.series.emplace_back();
+    series.colour = plot_colour(kinds_[i]);
     plot.x_end = float(duration);
     if (i < maxima.size() && maxima[i] > 0) plot.y_max = float(1.1 * maxima[i]);
-    for (int64_t j = 0; j < steps && j < int64_t(samples_[i].size()); j += stride) plot.points.push_back(samples_[i][j]);
+    for (int64_t j = 0; j < steps && j < int64_t(samples_[i].size()); j += stride) series.points.push_back(samples_[i][j]);
     plots.push_back(std::move(plot));
   }
   return plots;

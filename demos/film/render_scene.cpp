@@ -3,7 +3,7 @@
 #include "demos/film/marks.h"
 #include "demos/film/render_types.h"
 #include "demos/film/scene_draw_list.h"
-#include "demos/film/scene_film.h"
+#include "demos/film/film.h"
 #include "demos/film/frame_pipeline.h"
 #include "demos/film/handoff_queue.h"
 #include "render/overlay_painter.h"
@@ -27,6 +27,7 @@ namespace {
 
 constexpr int kFramesInFlight = 3;  // drawn, being finished, waiting: enough to keep both busy
 constexpr size_t kPicturesAhead = 2;  // frames the simulation may run ahead of the drawing
+const render::Colour kBetweenPanes{0.93f, 0.93f, 0.94f};
 
 bool wants_png(const RenderOptions& options, int64_t index, int frame_count) {
   if (options.png_directory.empty()) return false;
@@ -61,7 +62,7 @@ std::string vtt_time(double seconds) {
 
 // WebVTT: each [[caption]] as a cue in video time (slow motion stretches it), written as
 // NAME.vtt.part and renamed when complete.
-void write_captions(const Scene& scene, const SceneFilm& film, const std::string& path) {
+void write_captions(const Scene& scene, const Film& film, const std::string& path) {
   render::PartFile part(path);
   {
     std::ofstream file(part.part_path());
@@ -91,20 +92,39 @@ render::DrawList make_draw_list(const Scene& scene, const physics::World& world,
                          arrow_scales(scene, TakeSummary{}), to_render(scene.camera));
 }
 
+std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& options) {
+  return render_panes({{&scene, ""}}, options).front();
+}
+
+namespace {
+
+// The video records the settings that changed each pane's scene.
+std::string settings_comment(const std::vector<Pane>& panes) {
+  std::string comment;
+  for (size_t i = 0; i < panes.size(); ++i) {
+    if (panes[i].scene->settings.empty()) continue;
+    if (!comment.empty()) comment += "; ";
+    if (panes.size() > 1) comment += "pane " + std::to_string(i + 1) + ":";
+    for (const std::string& setting : panes[i].scene->settings) comment.append(comment.empty() ? "" : " ").append("--set ").append(setting);
+  }
+  return comment;
+}
+
+}  // namespace
+
 // Three threads, each a stage: the simulation (and what each frame shows) runs ahead on its own
 // thread; this thread draws (with llvmpipe's threads); a worker paints the overlay and encodes.
 // Bounded queues between them keep memory flat whatever the video's length.
-std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& options) {
+std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& panes, const RenderOptions& options) {
+  const Scene& scene = *panes.at(0).scene;  // sets the video, the captions and the frame's overlay
   render::VideoSettings video = to_render(scene.video);
-  for (const std::string& setting : scene.settings) {  // the video records the settings that changed it
-    if (!video.comment.empty()) video.comment += ' ';
-    video.comment.append("--set ").append(setting);
-  }
+  video.comment = settings_comment(panes);
   // The output first: a path that cannot be written is refused before any simulation.
   std::unique_ptr<render::VideoEncoder> encoder;
   if (!options.video_path.empty()) encoder = std::make_unique<render::VideoEncoder>(options.video_path, video);
-  SceneFilm film(scene, video.width, video.height);
-  render::Renderer renderer(video.width, video.height, options.renderer);
+  Film film(panes, video.width, video.height);
+  const PaneLayout& layout = film.layout();
+  render::Renderer renderer(layout.width, layout.height, options.renderer);
   if (!options.png_directory.empty()) std::filesystem::create_directories(options.png_directory);
   const int poster = film.poster_frame();
 
@@ -120,11 +140,11 @@ std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& o
     ++frames_finished;
   });
 
-  HandoffQueue<ScenePicture> pictures(kPicturesAhead);
+  HandoffQueue<FilmPicture> pictures(kPicturesAhead);
   std::thread simulation([&] {
     try {
       while (film.next_frame() < film.frame_count()) {
-        ScenePicture picture;
+        FilmPicture picture;
         film.next(picture);
         if (!pictures.push(std::move(picture))) return;  // the drawing stopped
       }
@@ -135,7 +155,7 @@ std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& o
   });
   // However this function ends, the simulation stops before the film it reads goes.
   struct StopSimulation {
-    HandoffQueue<ScenePicture>& pictures;
+    HandoffQueue<FilmPicture>& pictures;
     std::thread& thread;
     ~StopSimulation() {
       pictures.close();
@@ -143,9 +163,18 @@ std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& o
     }
   } stop{pictures, simulation};
 
-  while (std::optional<ScenePicture> picture = pictures.pop()) {
+  render::Frame pane_frame;
+  while (std::optional<FilmPicture> picture = pictures.pop()) {
     FrameJob& job = pipeline.acquire();
-    renderer.draw_into(picture->draw_list, job.frame);
+    if (picture->panes.size() == 1) {
+      renderer.draw_into(picture->panes.front(), job.frame);
+    } else {
+      render::fill(job.frame, video.width, video.height, kBetweenPanes);
+      for (size_t i = 0; i < picture->panes.size(); ++i) {
+        renderer.draw_into(picture->panes[i], pane_frame);
+        render::paste(pane_frame, layout.origins[i].x(), layout.origins[i].y(), job.frame);
+      }
+    }
     job.overlay = std::move(picture->overlay);
     pipeline.submit();
     if (options.progress) options.progress(frames_finished, film.frame_count());

@@ -3,6 +3,7 @@
 // happens on the calling thread (llvmpipe adds its own threads); the overlay, PNG files and the
 // encoder run on a worker thread, a few frames behind (render/frame_pipeline.h).
 #pragma once
+#include "demos/film/film.h"
 #include "demos/scene/scene_file.h"
 #include "physics/world.h"
 #include "render/draw_list.h"
@@ -32,6 +33,9 @@ render::DrawList make_draw_list(const Scene& scene, const physics::World& world,
 // Renders the whole scene and returns how its [[check]]s came out. Throws on any failure; a video
 // is complete under its final name or absent.
 std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& options);
+// The same for two to four scenes side by side in one video (a comparison, film.h); returns each
+// pane's checks.
+std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& panes, const RenderOptions& options);
 
 // The captions track and the poster written beside a video: NAME.mp4 -> NAME.vtt, NAME.png.
 std::string captions_path(const std::string& video_path);

@@ -17,6 +17,7 @@
 #include "render/draw_list.h"
 #include "render/overlay.h"
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -31,6 +32,11 @@ class SceneFilm {
  public:
   // Simulates the whole scene. `scene` must outlive the film.
   SceneFilm(const Scene& scene, int width, int height);
+  // Several scenes, each simulated once, their worlds stepped side by side and every film shown at
+  // the same moments: the first scene's playback, duration and frame rate, slowed around an impact
+  // of any of them, with one arrow scale and plot range for all (a comparison, film.h).
+  static std::vector<std::unique_ptr<SceneFilm>> together(const std::vector<const Scene*>& scenes, int width,
+                                                          int height);
 
   int frame_count() const { return int(moments_.size()); }
   // Seconds into the video at which simulated time `time` is first shown (slow motion included);
@@ -50,7 +56,11 @@ class SceneFilm {
     double speed = 1;  // playback factor then
     bool slow_motion = false;
   };
-  void shoot(int width, int height);
+  explicit SceneFilm(const Scene& scene);   // not yet shot
+  static void shoot(const std::vector<SceneFilm*>& films);
+  // Once shot: the arrow scales and the overlay's axes that `summary` (the run's, or the largest of
+  // films shown together) fixes.
+  void develop(int width, int height, const TakeSummary& summary);
 
   const Scene& scene_;
   WorldTake take_;

@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -24,6 +25,8 @@
 #include <thread>
 #include <vector>
 
+#include "demos/film/render_scene.h"
+#include "demos/scene/scene_file.h"
 #include "tests/bench/render_phases.h"
 
 extern char** environ;
@@ -73,6 +76,37 @@ double peak_memory_of_video(const char* self, int seconds, const std::string& wo
   wait4(child, &status, 0, &usage);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return -1;
   return double(usage.ru_maxrss) / 1024.0;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// `impulse compare` against one pane: assets/scenes/bounce.toml end to end to MP4 at the bench's
+// size, alone and as two panes (friction on and off) of the same size of video. Goal: <= 1.5x.
+// Two panes simulate two worlds and draw two smaller images (each a quarter of the frame's pixels,
+// with the same geometry and shadows) into one frame that is encoded once.
+void time_comparison(const bench::BenchSettings& settings, bool smoke, const std::string& work) {
+  demos::Scene alone = demos::load_scene(IMPULSE_SOURCE_DIR "/assets/scenes/bounce.toml");
+  alone.video.width = settings.width;
+  alone.video.height = settings.height;
+  if (smoke) alone.duration = 0.3;
+  demos::Scene off = alone;
+  off.world.contact.friction = false;
+  demos::RenderOptions options;
+  options.video_path = (fs::path(work) / "compare.mp4").string();
+  // Interleaved, the faster of two runs each: the first run of a process also starts llvmpipe.
+  double one = 1e30, two = 1e30;
+  for (int round = 0; round < (smoke ? 1 : 2); ++round) {
+    const auto one_start = std::chrono::steady_clock::now();
+    demos::render_scene(alone, options);
+    one = std::min(one, seconds_since(one_start));
+    const auto two_start = std::chrono::steady_clock::now();
+    demos::render_panes({{&alone, "friction on"}, {&off, "friction off"}}, options);
+    two = std::min(two, seconds_since(two_start));
+  }
+  std::printf("\ncomparison (bounce.toml, %.1f s, %dx%d): one pane %.2f s, two panes %.2f s = %.2fx (goal: <= 1.5x)\n",
+              alone.duration, settings.width, settings.height, one, two, two / one);
 }
 
 Options parse(int argc, char** argv) {
@@ -149,6 +183,7 @@ int main(int argc, char** argv) {
     if (have_naive && naive.frames_per_second() > 0)
       std::printf("\nend to end: %.1f frames/s = %.2fx the naive peer (goal: >= 30 frames/s and >= 3x)\n",
                   ours.frames_per_second(), ours.frames_per_second() / naive.frames_per_second());
+    time_comparison(settings, options.smoke, options.work);
     if (options.memory) {
       const double ten = peak_memory_of_video(argv[0], 10, options.work);
       const double sixty = peak_memory_of_video(argv[0], 60, options.work);

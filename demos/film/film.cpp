@@ -1,0 +1,109 @@
+#include "demos/film/film.h"
+
+#include "render/palette.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace impulse::demos {
+
+PaneLayout pane_layout(int panes, int width, int height, bool plots) {
+  PaneLayout layout;
+  if (panes <= 1) {
+    layout.width = width;
+    layout.height = height;
+    layout.origins = {Eigen::Vector2i::Zero()};
+    return layout;
+  }
+  // Sizes as the overlay painter's (render/overlay_painter.cpp), which scale with the height.
+  const double scale = height / 720.0;
+  const int columns = 2, rows = (panes + 1) / 2;
+  const bool plots_row = plots && rows == 1;
+  const double gap = 8 * scale, top = 72 * scale;                  // under the title and the clock
+  const double plots_band = plots_row ? 108 * scale : 0;           // a plot and its gaps
+  const double plots_column = plots && !plots_row ? 300 * scale : 0;
+  const double room_width = width - plots_column - (columns + 1) * gap;
+  const double room_height = height - top - plots_band - rows * gap;
+  const double pane_width = std::min(room_width / columns, room_height / rows * width / height);
+  layout.width = int(pane_width) / 2 * 2;
+  layout.height = int(pane_width * height / width) / 2 * 2;
+
+  const double block_width = columns * layout.width + (columns - 1) * gap;
+  const double block_height = rows * layout.height + (rows - 1) * gap + plots_band;
+  const double left = (width - plots_column - block_width) / 2;
+  const double upper = top + std::max(0.0, (height - top - block_height) / 2);
+  for (int pane = 0; pane < panes; ++pane) {
+    const int column = pane % columns, row = pane / columns;
+    layout.origins.emplace_back(int(std::lround(left + column * (layout.width + gap))),
+                                int(std::lround(upper + row * (layout.height + gap))));
+  }
+  if (plots_row) layout.plots_row_top = float(upper + layout.height + gap);
+  return layout;
+}
+
+render::Colour pane_colour(int pane) {
+  namespace oi = render::okabe_ito;
+  const render::Colour colours[] = {oi::blue, oi::vermillion, oi::bluish_green, oi::reddish_purple};
+  return colours[pane % 4];
+}
+
+Film::Film(const std::vector<Pane>& panes, int width, int height) : panes_(panes), frame_height_(height) {
+  if (panes.empty() || panes.size() > 4) throw std::invalid_argument("a video shows one to four scenes");
+  const Scene& first = *panes.front().scene;
+  layout_ = pane_layout(int(panes.size()), width, height, !first.overlay.plots.empty());
+  std::vector<const Scene*> scenes;
+  for (const Pane& pane : panes) scenes.push_back(pane.scene);
+  films_ = SceneFilm::together(scenes, layout_.width, layout_.height);
+  pictures_.resize(panes.size());
+}
+
+std::vector<std::vector<CheckResult>> Film::check_results() const {
+  std::vector<std::vector<CheckResult>> results;
+  for (const auto& film : films_) results.push_back(film->check_results());
+  return results;
+}
+
+void Film::next(FilmPicture& picture) {
+  picture.panes.resize(films_.size());
+  for (size_t i = 0; i < films_.size(); ++i) {
+    films_[i]->next(pictures_[i]);
+    picture.panes[i] = std::move(pictures_[i].draw_list);
+  }
+  if (films_.size() == 1) {
+    picture.overlay = std::move(pictures_.front().overlay);
+  } else {
+    compose(pictures_, picture.overlay);
+  }
+}
+
+// The first pane's overlay for the whole frame; every pane's labels moved to where the pane is,
+// its name at its bottom left, and each plot's curves of every pane on the first pane's axes.
+void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay) const {
+  const float scale = float(frame_height_) / 720.0f;  // as the painter's
+  std::vector<render::OverlayLabel> labels;
+  std::vector<render::Plot> plots;
+  for (size_t i = 0; i < pictures.size(); ++i) {
+    const render::Overlay& pane = pictures[i].overlay;
+    const render::Vec2f origin = layout_.origins[i].cast<float>();
+    for (const render::OverlayLabel& label : pane.labels) labels.push_back({label.anchor + origin, label.text, label.colour});
+    // Inside its bottom left corner, clear of the title and legend over the first pane's top.
+    labels.push_back({origin + render::Vec2f(-2 * scale, float(layout_.height) - 4 * scale), panes_[i].label, pane_colour(int(i))});
+    for (size_t k = 0; k < pane.plots.size(); ++k) {
+      if (k == plots.size()) plots.push_back({pane.plots[k].title, pane.plots[k].unit, pane.plots[k].x_end, 0, 0, {}});
+      render::Plot& plot = plots[k];
+      plot.y_min = std::min(plot.y_min, pane.plots[k].y_min);
+      plot.y_max = std::max(plot.y_max, pane.plots[k].y_max);
+      for (render::PlotSeries series : pane.plots[k].series) {
+        series.colour = pane_colour(int(i));
+        plot.series.push_back(std::move(series));
+      }
+    }
+  }
+  overlay = std::move(pictures.front().overlay);
+  overlay.labels = std::move(labels);
+  overlay.plots = std::move(plots);
+  overlay.plots_row_top = layout_.plots_row_top;
+}
+
+}  // namespace impulse::demos

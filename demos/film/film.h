@@ -1,0 +1,65 @@
+// What each frame of a video shows: one scene filling the frame, or two to four scenes side by
+// side in panes (a comparison), each simulated once, their worlds stepped together and shown at
+// the same simulated moments with the same camera (SceneFilm::together). The first scene sets the
+// playback, duration and frame rate; its title, clock, legend and captions are the whole frame's;
+// each pane carries a label naming what sets it apart (bottom left, in its colour), and the plots draw every
+// pane's curve on one set of axes in the panes' colours.
+#pragma once
+#include "demos/film/scene_film.h"
+#include "render/overlay.h"
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace impulse::demos {
+
+// One pane: a scene, and the label naming what sets it apart (e.g. "world.friction = false").
+struct Pane {
+  const Scene* scene = nullptr;  // must outlive the film
+  std::string label;
+};
+
+// Where the panes go in a width x height frame: two side by side, three or four in a grid of two
+// columns, each of the frame's aspect, under a band for the title and clock. Plots go in a row
+// under one row of panes, else in the column at the right.
+struct PaneLayout {
+  int width = 0;                          // of each pane, pixels
+  int height = 0;
+  std::vector<Eigen::Vector2i> origins;   // each pane's top-left corner in the frame
+  float plots_row_top = -1.0f;            // the plots' row (render::Overlay::plots_row_top)
+};
+PaneLayout pane_layout(int panes, int width, int height, bool plots);
+
+render::Colour pane_colour(int pane);  // the label's and the plots' colour of each pane
+
+// A frame as the drawing thread takes it: one draw list per pane, the overlay over the whole frame.
+struct FilmPicture {
+  std::vector<render::DrawList> panes;
+  render::Overlay overlay;
+};
+
+class Film {
+ public:
+  Film(const std::vector<Pane>& panes, int width, int height);  // simulates every scene
+
+  int frame_count() const { return films_.front()->frame_count(); }
+  int next_frame() const { return films_.front()->next_frame(); }
+  double video_time_of(double time) const { return films_.front()->video_time_of(time); }
+  int poster_frame() const { return films_.front()->poster_frame(); }
+  const PaneLayout& layout() const { return layout_; }
+  std::vector<std::vector<CheckResult>> check_results() const;  // each pane's scene's [[check]]s
+  void next(FilmPicture& picture);  // the next frame, from 0 up to frame_count() - 1
+
+ private:
+  void compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay) const;
+
+  std::vector<Pane> panes_;
+  int frame_height_;
+  PaneLayout layout_;
+  std::vector<std::unique_ptr<SceneFilm>> films_;
+  std::vector<ScenePicture> pictures_;  // each pane's, reused frame to frame
+};
+
+}  // namespace impulse::demos

@@ -1,0 +1,118 @@
+// Comparisons (film.h): where the panes go, and worlds stepped together that share their moments.
+#include "demos/film/film.h"
+#include "tests/scene_scratch.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <utility>
+
+namespace impulse {
+namespace {
+
+using demos::PaneLayout;
+
+bool overlap(const PaneLayout& layout, size_t a, size_t b) {
+  const Eigen::Vector2i& p = layout.origins[a];
+  const Eigen::Vector2i& q = layout.origins[b];
+  return p.x() < q.x() + layout.width && q.x() < p.x() + layout.width && p.y() < q.y() + layout.height &&
+         q.y() < p.y() + layout.height;
+}
+
+TEST(PaneLayout, TwoSideBySideThreeOrFourInAGridEachOfTheFramesShape) {
+  const PaneLayout one = demos::pane_layout(1, 1280, 720, true);
+  EXPECT_EQ(one.width, 1280);
+  EXPECT_EQ(one.height, 720);
+  for (const bool plots : {false, true}) {
+    for (const int panes : {2, 3, 4}) {
+      SCOPED_TRACE(std::to_string(panes) + (plots ? " panes, plots" : " panes"));
+      const PaneLayout layout = demos::pane_layout(panes, 1280, 720, plots);
+      ASSERT_EQ(layout.origins.size(), size_t(panes));
+      EXPECT_NEAR(double(layout.width) / layout.height, 1280.0 / 720.0, 0.02);
+      EXPECT_GE(layout.width, 460);  // more than a third of the frame
+      for (size_t i = 0; i < layout.origins.size(); ++i) {
+        const Eigen::Vector2i& at = layout.origins[i];
+        EXPECT_GE(at.x(), 0);
+        EXPECT_GE(at.y(), 72);  // under the title and the clock
+        EXPECT_LE(at.x() + layout.width, plots && panes > 2 ? 1280 - 300 : 1280);  // the plots' column
+        EXPECT_LE(at.y() + layout.height, 720);
+        for (size_t j = 0; j < i; ++j) EXPECT_FALSE(overlap(layout, i, j)) << i << " and " << j;
+      }
+      EXPECT_EQ(layout.origins[1].y(), layout.origins[0].y());  // side by side
+      if (panes > 2) {
+        EXPECT_GT(layout.origins[2].y(), layout.origins[0].y());
+      }
+      if (plots && panes == 2) {  // a row of plots (88 px high) under the panes
+        EXPECT_GE(layout.plots_row_top, layout.origins[0].y() + layout.height);
+        EXPECT_LE(layout.plots_row_top + 88, 720);
+      } else {
+        EXPECT_LT(layout.plots_row_top, 0);
+      }
+    }
+  }
+}
+
+// A ball dropped from `height` m, slowed around its landing.
+std::string drop(double height) {
+  return R"(
+[scene]
+duration = 1.5
+[video]
+width = 320
+height = 180
+fps = 20
+[playback]
+slow_motion_impulse = 0.5
+slow_motion_speed = 0.2
+slow_motion_window = 0.1
+[[body]]
+shape = "plane"
+[[body]]
+name = "ball"
+shape = "sphere"
+radius = 0.2
+mass = 1.0
+restitution = 0.3
+position = [0, )" + std::to_string(height) + R"(, 0]
+)";
+}
+
+// Each ball lands at its own time; shown together, both panes slow down around both landings, so
+// the comparison has more frames than either alone, and every pane is drawn at every frame.
+TEST(Film, PanesShareTheirMomentsAndSlowDownAroundAnyPanesImpact) {
+  const auto dir = testing::scratch("film_compare_test", "moments");
+  const demos::Scene low = testing::scene_from(dir, drop(0.5));
+  const demos::Scene high = testing::scene_from(dir, drop(1.5));
+  const demos::Film low_alone({{&low, ""}}, 320, 180), high_alone({{&high, ""}}, 320, 180);
+  demos::Film together({{&low, "low"}, {&high, "high"}}, 640, 360);
+  // Landing at 0.28 s and 0.53 s: about 0.2 s of slow motion each, 0.8 s of video more than none.
+  const int plain = 30;
+  EXPECT_GT(low_alone.frame_count(), plain + 10);
+  EXPECT_GT(high_alone.frame_count(), plain + 10);
+  EXPECT_GT(together.frame_count(), low_alone.frame_count() + 10);
+  EXPECT_GT(together.frame_count(), high_alone.frame_count() + 10);
+  EXPECT_GT(together.video_time_of(1.0), high_alone.video_time_of(1.0) + 0.5);
+
+  demos::FilmPicture picture;
+  int frames = 0;
+  while (together.next_frame() < together.frame_count()) {
+    together.next(picture);
+    ASSERT_EQ(picture.panes.size(), 2u);
+    ++frames;
+  }
+  EXPECT_EQ(frames, together.frame_count());
+  // Each pane is labelled with its name inside its bottom-left corner.
+  std::map<std::string, render::Vec2f> labels;
+  for (const render::OverlayLabel& label : picture.overlay.labels) labels[label.text] = label.anchor;
+  ASSERT_EQ(labels.count("low"), 1u);
+  ASSERT_EQ(labels.count("high"), 1u);
+  for (const auto& [name, pane] : {std::pair{"low", 0}, std::pair{"high", 1}}) {
+    const Eigen::Vector2i& origin = together.layout().origins[pane];
+    EXPECT_NEAR(labels[name].x(), origin.x(), 10) << name;
+    EXPECT_NEAR(labels[name].y(), origin.y() + 0.75 * together.layout().height, together.layout().height / 4) << name;
+  }
+}
+
+}  // namespace
+}  // namespace impulse
