@@ -9,7 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <sys/resource.h>
 #include <unistd.h>
+
+#include <chrono>
 
 namespace impulse {
 namespace {
@@ -27,15 +30,27 @@ std::string verdict(const std::string& path) {
   }
 }
 
+long peak_resident_kib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;
+}
+
+// ... each within a second and 64 MiB (too_many.toml's lattice of 10^9 boxes is refused before
+// anything is allocated).
 TEST(BadScenes, EachGetsExactlyItsMessage) {
   std::ifstream expected("tests/bad_scenes/expected.tsv");
   ASSERT_TRUE(expected) << "run from the repository root";
+  const long resident_before = peak_resident_kib();
   int cases = 0;
   for (std::string line; std::getline(expected, line); ++cases) {
     const size_t tab = line.find('\t');
     ASSERT_NE(tab, std::string::npos) << line;
     const std::string path = "tests/bad_scenes/" + line.substr(0, tab);
+    const auto start = std::chrono::steady_clock::now();
     EXPECT_EQ(verdict(path), line.substr(tab + 1)) << path;
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0) << path << ": s";
+    EXPECT_LT(peak_resident_kib() - resident_before, 64 * 1024) << path << ": KiB more at the peak";
   }
   // Every file has its line.
   int files = 0;
