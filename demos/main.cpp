@@ -3,7 +3,7 @@
 #include "demos/progress_bar.h"
 #include "demos/film/render_scene.h"
 #include "demos/scene/scene_file.h"
-#include "demos/scene/scene_overrides.h"
+#include "demos/scene/scene_compare.h"
 #include "demos/scene/scene_world.h"
 #include "demos/scene/video_quality.h"
 #include "demos/simulate.h"
@@ -130,9 +130,13 @@ demos::RenderOptions output_options(const std::string& video_path, const std::st
   return options;
 }
 
+int render_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
+                      demos::RenderOptions options, const VideoOverrides& overrides, bool progress);
+
 int render_one(const std::string& scene_path, demos::RenderOptions options, const VideoOverrides& overrides,
                bool progress) {
   demos::Scene scene = load(scene_path, overrides.settings);
+  if (!scene.compare.values.empty()) return render_comparison({scene_path}, "", options, overrides, progress);
   overrides.apply(scene, options);
   demos::ProgressBar bar(progress, scene_path);
   options.progress = [&bar](int done, int total) { bar.update(done, total); };
@@ -143,8 +147,8 @@ int render_one(const std::string& scene_path, demos::RenderOptions options, cons
   return report_checks(scene_path, checks);
 }
 
-// The panes of `impulse compare`: one scene per --vary value, or one per scene file. Every pane
-// gets the first's camera, video, playback and duration.
+// The panes of a comparison: one scene per value of --vary or of the file's [compare], or one per
+// scene file. Every pane gets the first's camera, video, playback and duration.
 struct Comparison {
   std::vector<std::string> paths;      // the scene file of each pane
   std::vector<demos::Scene> scenes;
@@ -154,22 +158,27 @@ struct Comparison {
 Comparison load_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
                            const VideoOverrides& overrides, demos::RenderOptions& options) {
   Comparison comparison;
-  std::vector<std::string> variants;
-  if (!vary.empty()) {
-    if (scene_paths.size() != 1) throw std::invalid_argument("--vary compares settings of one scene: give one scene file");
-    variants = demos::split_variants(vary);
-    if (variants.size() < 2 || variants.size() > 4)
-      throw std::invalid_argument("--vary " + vary + ": give two to four values, separated by commas");
-  } else if (scene_paths.size() < 2 || scene_paths.size() > 4) {
+  std::vector<std::string> labels;
+  if (scene_paths.size() == 1) {
+    const std::string& path = scene_paths.front();
+    const demos::CompareSpec compare = vary.empty() ? load(path, overrides.settings).compare : demos::compare_from_vary(vary);
+    if (compare.values.empty())
+      throw std::invalid_argument(path + ": nothing to compare: give --vary KEY=V1,V2, a [compare] table in the scene, "
+                                  "or two to four scene files");
+    comparison.scenes = demos::load_variants(path, overrides.settings, compare);
+    labels = compare.labels;
+    comparison.paths.assign(compare.values.size(), path);
+  } else if (!vary.empty() || scene_paths.size() > 4) {
     throw std::invalid_argument("compare shows two to four panes: give two to four scene files, or one and --vary KEY=V1,V2");
+  } else {
+    for (const std::string& path : scene_paths) {
+      comparison.scenes.push_back(load(path, overrides.settings));
+      labels.push_back(fs::path(path).stem().string());
+    }
+    comparison.paths = scene_paths;
   }
-  const size_t count = variants.empty() ? scene_paths.size() : variants.size();
-  comparison.scenes.reserve(count);  // the panes point at them
-  for (size_t i = 0; i < count; ++i) {
-    const std::string& path = variants.empty() ? scene_paths[i] : scene_paths[0];
-    std::vector<std::string> settings = overrides.settings;
-    if (!variants.empty()) settings.push_back(variants[i]);
-    demos::Scene& scene = comparison.scenes.emplace_back(load(path, settings));
+  for (size_t i = 0; i < comparison.scenes.size(); ++i) {
+    demos::Scene& scene = comparison.scenes[i];
     if (i == 0) {
       overrides.apply(scene, options);
     } else {
@@ -180,10 +189,7 @@ Comparison load_comparison(const std::vector<std::string>& scene_paths, const st
       scene.playback = first.playback;
       scene.duration = first.duration;
     }
-    comparison.paths.push_back(path);
-    std::string label = variants.empty() ? fs::path(path).stem().string() : variants[i];
-    if (const size_t equals = label.find('='); !variants.empty()) label.replace(equals, 1, " = ");
-    comparison.panes.push_back({&scene, label});
+    comparison.panes.push_back({&scene, labels[i]});
   }
   return comparison;
 }
@@ -285,8 +291,8 @@ int main(int argc, char** argv) {
                "written as NAME.mp4.part and renamed when complete."};
   app.footer(std::string("\nExamples:\n"
                          "  impulse render assets/scenes/bounce.toml                  # -> out/bounce.mp4\n"
-                         "  impulse render assets/scenes/ex1_friction_off.toml --set world.friction=true -o on.mp4\n"
-                         "  impulse compare assets/scenes/ex1_friction_off.toml --vary world.friction=false,true\n"
+                         "  impulse render assets/scenes/bounce.toml --set world.friction=false -o no_friction.mp4\n"
+                         "  impulse compare assets/scenes/bounce.toml --vary world.method=impulse,penalty\n"
                          "  impulse simulate assets/scenes/bounce.toml --trace bodies.csv --world world.csv\n"
                          "  impulse catalogue -o out                                  # every scene of assets/scenes\n") +
              kExitCodes);
@@ -314,8 +320,8 @@ int main(int argc, char** argv) {
   compare->footer(std::string("\nThe panes share the first scene's camera, video, playback and duration, and the same simulated\n"
                               "time; each is labelled with what sets it apart; plots draw every pane's curve in its colour.\n"
                               "\nExamples:\n"
-                              "  impulse compare assets/scenes/ex1_friction_off.toml --vary world.friction=false,true\n"
-                              "  impulse compare assets/scenes/s1_projection.toml --vary world.method=projection,impulse,penalty\n"
+                              "  impulse compare assets/scenes/bounce.toml --vary world.method=impulse,penalty\n"
+                              "  impulse compare assets/scenes/s4_angular.toml --vary world.friction=true,false\n"
                               "  impulse compare a.toml b.toml -o a_vs_b.mp4\n") +
                   kExitCodes);
   std::vector<std::string> compare_paths;
@@ -428,12 +434,23 @@ int main(int argc, char** argv) {
     }
     if (*check) {
       const demos::Scene scene = load(scene_path, check_settings);
+      if (!scene.compare.values.empty()) demos::load_variants(scene_path, check_settings, scene.compare);  // each pane's values
       std::printf("%s: fine, %zu bodies, %.1f s, %zu checks\n", scene_path.c_str(), scene.bodies.size(), scene.duration,
                   scene.checks.size());
       if (!check_simulate) return 0;
-      std::vector<demos::CheckResult> checks;
-      demos::simulate_scene(scene, demos::TraceOptions{}, &checks);
-      return report_checks(scene_path, checks);
+      if (scene.compare.values.empty()) {
+        std::vector<demos::CheckResult> checks;
+        demos::simulate_scene(scene, demos::TraceOptions{}, &checks);
+        return report_checks(scene_path, checks);
+      }
+      int exit_code = 0;  // each pane of the comparison, with its checks
+      const std::vector<demos::Scene> panes = demos::load_variants(scene_path, check_settings, scene.compare);
+      for (size_t i = 0; i < panes.size(); ++i) {
+        std::vector<demos::CheckResult> checks;
+        demos::simulate_scene(panes[i], demos::TraceOptions{}, &checks);
+        exit_code = std::max(exit_code, report_checks(scene_path + " [" + scene.compare.labels[i] + "]", checks));
+      }
+      return exit_code;
     }
   } catch (const std::exception& error) {
     return report(error);

@@ -56,6 +56,8 @@ struct Caption {
 struct Overlay {
   std::string title;                  // top left
   std::vector<Caption> captions;      // lines shown now, bottom centre
+  float captions_left = 0.0f;         // captions_right > captions_left: centred between these x
+  float captions_right = 0.0f;        // instead (a comparison's empty cell)
   std::vector<OverlayLabel> labels;
   std::string clock;                  // top right, e.g. "t = 1.25 s"
   std::string playback;               // under the clock, e.g. "slow motion ×0.25"; empty: none

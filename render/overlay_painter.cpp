@@ -325,14 +325,17 @@ void OverlayPainter::Cairo::captions(const Overlay& overlay) {
   const double size = 24 * scale, line = size * 1.35, pad_x = 18 * scale, pad_y = 10 * scale;
   const double margin = 28 * scale;
   set_font(cr, size);
+  const bool span = overlay.captions_right > overlay.captions_left;
+  const double left = span ? overlay.captions_left : 0.0, span_width = span ? overlay.captions_right - left : width;
+  const double centre = left + span_width / 2;
   // Bottom up: the last caption sits lowest.
   double bottom = height - margin;
   for (auto caption = overlay.captions.rbegin(); caption != overlay.captions.rend(); ++caption) {
-    const std::vector<std::string> lines = wrap(cr, caption->text, 0.8 * width);
+    const std::vector<std::string> lines = wrap(cr, caption->text, span ? span_width - 2 * pad_x : 0.8 * width);
     double box_width = 0;
     for (const std::string& l : lines) box_width = std::max(box_width, text_width(cr, l));
     const double box_height = line * lines.size() + 2 * pad_y;
-    const double x = (width - box_width) / 2 - pad_x, y = bottom - box_height;
+    const double x = centre - box_width / 2 - pad_x, y = bottom - box_height;
     const double opacity = std::clamp(double(caption->opacity), 0.0, 1.0);
     rounded_rectangle(cr, x, y, box_width + 2 * pad_x, box_height, 10 * scale);
     mark(x, y, box_width + 2 * pad_x, box_height);
@@ -340,7 +343,7 @@ void OverlayPainter::Cairo::captions(const Overlay& overlay) {
     cairo_fill(cr);
     cairo_set_source_rgba(cr, 1, 1, 1, opacity);
     for (size_t i = 0; i < lines.size(); ++i) {
-      cairo_move_to(cr, (width - text_width(cr, lines[i])) / 2, y + pad_y + line * i + size * 1.0);
+      cairo_move_to(cr, centre - text_width(cr, lines[i]) / 2, y + pad_y + line * i + size * 1.0);
       cairo_show_text(cr, lines[i].c_str());
     }
     bottom = y - 8 * scale;

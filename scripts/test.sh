@@ -30,7 +30,7 @@ export TSAN_OPTIONS="suppressions=$san/tsan.supp:print_suppressions=0:second_dea
 # test's two-thread run, the 1000-box heap, the 210-box pyramid) and whole scenes rendered with
 # the simulation thread, the drawing thread and the encoder's worker (film_tests, program_tests).
 tsan_targets=(physics_tests physics_box_tests film_tests program_tests impulse)
-tsan_tests='^(Determinism\.|Heap\.Thousand|Stack\.PyramidOf21Boxes|Video\.|RenderVideo\.|Playback\.|Set\.|Simulate\.)'
+tsan_tests='^(Determinism\.|Heap\.Thousand|Stack\.PyramidOf21Boxes|Video\.|RenderVideo\.|Playback\.|Set\.|Simulate\.|Compare\.)'
 
 # Left out of the ASan+UBSan run, and only for their time: the three longest runs of the solver,
 # 389 s, 355 s and 265 s under ASan+UBSan on two cores (24-70 s without). They run the code the

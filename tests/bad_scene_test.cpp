@@ -1,6 +1,7 @@
 // Bad scenes (tests/bad_scenes/, one file each): each is refused with exactly the message in
 // tests/bad_scenes/expected.tsv, or, when it is odd but allowed, gets exactly that warning; a
 // directory and a missing file are refused too. Run from the repository root.
+#include "demos/scene/scene_compare.h"
 #include "demos/scene/scene_file.h"
 #include "demos/scene/scene_world.h"
 
@@ -23,6 +24,7 @@ namespace fs = std::filesystem;
 std::string verdict(const std::string& path) {
   try {
     const demos::Scene scene = demos::load_scene(path);
+    if (!scene.compare.values.empty()) demos::load_variants(path, {}, scene.compare);  // each pane's value
     const std::vector<std::string> warnings = demos::start_warnings(scene);
     return warnings.empty() ? "fine" : warnings.front();
   } catch (const demos::SceneError& error) {

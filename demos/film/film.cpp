@@ -104,6 +104,10 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
   overlay.labels = std::move(labels);
   overlay.plots = std::move(plots);
   overlay.plots_row_top = layout_.plots_row_top;
+  if (panes_.size() == 3) {  // the captions in the grid's empty cell, clear of the panes
+    overlay.captions_left = float(layout_.origins[1].x());
+    overlay.captions_right = float(layout_.origins[1].x() + layout_.width);
+  }
 }
 
 }  // namespace impulse::demos

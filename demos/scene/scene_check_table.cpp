@@ -35,6 +35,11 @@ void read_checks(TableReader& top, Scene& scene) {
       check.min = r.vec3("min", check.min);
       check.max = r.vec3("max", check.max);
     }
+    const int panes = int(scene.compare.values.size());
+    check.pane = r.integer("pane", 0, 0, 4);
+    if (check.pane > panes)
+      r.fail(r.get("pane"), "pane", panes == 0 ? "the scene has no [compare] table, so no panes"
+                                                : "the [compare] table has " + std::to_string(panes) + " panes");
     r.finish();
     check.text = "[[check]] " + std::to_string(index) + " (" + check.kind + (body.empty() ? "" : " of '" + body + "'") + ")";
     scene.checks.push_back(check);

@@ -11,6 +11,8 @@
 //                         with `ratio`, that height over its starting height is `ratio` ± `tolerance`
 //   kind = "drift"        `body` ends the window at most `distance` (m) from where it began it
 //   kind = "penetration"  no contact's penetration exceeds `depth` (m)
+//
+// In a scene with [compare], `pane = N` makes a check about the Nth pane only (from 1).
 #pragma once
 #include <string>
 #include <vector>
@@ -24,6 +26,7 @@ struct CheckSpec {
   std::string kind;
   std::string text;       // how the scene states it, for reports: "[[check]] 2 (height of 'ball')"
   int body = -1;          // index into the scene's bodies, for the kinds that name one
+  int pane = 0;           // in a comparison ([compare]), the pane (from 1) it is about; 0: every pane
   double from = 0, to = 1e9;
   double tolerance = 0, speed = 0, distance = 0, depth = 0, ratio = 0;
   physics::Vec3 min = physics::Vec3::Constant(-1e9), max = physics::Vec3::Constant(1e9);

@@ -31,6 +31,16 @@ struct DrawOptions {
   bool sleeping = true;          // sleeping bodies pale and hatched
 };
 
+// [compare] (or --vary): the scene shown as two to four panes side by side, one per value of one
+// field (scene_compare.h). `key` is written as --set writes it; each value is TOML text (0.2,
+// false, "projection", [0, 1, 0]).
+struct CompareSpec {
+  std::string origin;               // for messages: "FILE:LINE: [compare]" or "--vary ARGUMENT"
+  std::string key;
+  std::vector<std::string> values;  // empty: no comparison
+  std::vector<std::string> labels;  // one per value
+};
+
 struct Scene {
   std::string path;
   std::vector<std::string> settings;  // the --set arguments applied over the file
@@ -48,6 +58,7 @@ struct Scene {
   std::vector<CaptionCue> captions;
   PlaybackOptions playback;
   std::vector<CheckSpec> checks;  // [[check]]: what must hold
+  CompareSpec compare;            // [compare]
 };
 
 // `settings` are --set KEY=VALUE arguments (scene_overrides.h), applied over the file.

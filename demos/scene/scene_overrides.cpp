@@ -9,7 +9,7 @@ namespace impulse::demos {
 namespace {
 
 // The tables a scene file may have, and which of them are lists of tables.
-const std::vector<std::string> kTables = {"scene", "world", "camera", "video", "draw", "overlay", "playback"};
+const std::vector<std::string> kTables = {"scene", "world", "camera", "video", "draw", "overlay", "playback", "compare"};
 const std::vector<std::string> kLists = {"body", "joint", "caption", "pyramid", "lattice", "check"};
 
 [[noreturn]] void refuse(const std::string& argument, const std::string& reason) {
@@ -145,42 +145,6 @@ OverrideNodes apply_overrides(toml::table& root, const std::vector<std::string>&
   OverrideNodes written;
   for (const std::string& argument : settings) apply_override(root, argument, written);
   return written;
-}
-
-std::vector<std::string> split_variants(const std::string& vary) {
-  const size_t equals = vary.find('=');
-  const std::string key = vary.substr(0, equals);
-  if (equals == std::string::npos || key.empty())
-    throw SceneError("--vary " + vary + ": write KEY=VALUE1,VALUE2 (like world.friction=true,false)");
-  for (const char* shared : {"video", "playback", "camera", "scene.duration"}) {
-    const std::string prefix = shared;
-    if (key == prefix || key.rfind(prefix + ".", 0) == 0 || key.rfind(prefix + "[", 0) == 0)
-      throw SceneError("--vary " + vary + ": every pane of a comparison has the same " + prefix +
-                       "; vary a setting of the world, the bodies or the drawing (or use --set for all panes)");
-  }
-  std::vector<std::string> settings;
-  std::string value;
-  int depth = 0;
-  bool quoted = false;
-  auto add = [&] {
-    value.erase(0, value.find_first_not_of(" \t"));
-    value.erase(value.find_last_not_of(" \t") + 1);
-    if (value.empty()) throw SceneError("--vary " + vary + ": an empty value (two commas, or one at an end)");
-    settings.push_back(key + "=" + value);
-    value.clear();
-  };
-  for (const char c : vary.substr(equals + 1)) {
-    if (c == '"') quoted = !quoted;
-    if (!quoted && (c == '[' || c == '{')) ++depth;
-    if (!quoted && (c == ']' || c == '}')) --depth;
-    if (c == ',' && depth == 0 && !quoted) {
-      add();
-    } else {
-      value += c;
-    }
-  }
-  add();
-  return settings;
 }
 
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& known) {

@@ -23,13 +23,6 @@ using OverrideNodes = std::map<const toml::node*, std::string>;
 // Throws SceneError naming the argument for a malformed one or a path that names nothing.
 OverrideNodes apply_overrides(toml::table& root, const std::vector<std::string>& settings);
 
-// --vary KEY=V1,V2[,...]: one --set argument per value ("KEY=V1", "KEY=V2", ...). A comma inside
-// brackets or quotes is part of its value (body[0].velocity=[1, 0, 0],[2, 0, 0]). Throws SceneError
-// for an argument without KEY= or with an empty value. Keys of what the whole video shares (the
-// camera, the video, the playback and the duration) are refused: a comparison shows every pane
-// alike there.
-std::vector<std::string> split_variants(const std::string& vary);
-
 // "did you mean 'x'?" for the closest of `known` to `word` (a typo or two away), else "".
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& known);
 

@@ -29,6 +29,7 @@ void read_bodies(TableReader& top, Scene& scene);  // [[body]]
 void read_patterns(TableReader& top, Scene& scene);  // [[pyramid]], [[lattice]]: many bodies at once
 void read_joints(TableReader& top, Scene& scene);  // [[joint]], after the bodies they name
 void read_view(TableReader& top, Scene& scene);
+void read_compare(TableReader& top, Scene& scene);  // [compare], before the checks that name a pane
 void read_checks(TableReader& top, Scene& scene);  // [[check]], after the bodies they name    // [camera], [video], [draw], [overlay], [[caption]], [playback]
 
 }  // namespace impulse::demos
