@@ -1,4 +1,5 @@
 // The `impulse` command line: scene files in, teaching videos out.
+#include "demos/gallery.h"
 #include "demos/interrupts.h"
 #include "demos/progress_bar.h"
 #include "demos/film/render_scene.h"
@@ -220,6 +221,24 @@ int render_comparison(const std::vector<std::string>& scene_paths, const std::st
   return exit_code;
 }
 
+// Each pane of a comparison scene alone, beside the comparison (the gallery links them); their
+// checks were reported with the comparison. Nothing for a scene that is no comparison.
+void render_panes_alone(const std::string& scene_path, const std::string& video_path, const VideoOverrides& overrides,
+                        bool progress) {
+  const demos::CompareSpec compare = demos::load_scene(scene_path, overrides.settings).compare;
+  if (compare.values.empty()) return;
+  std::vector<demos::Scene> panes = demos::load_variants(scene_path, overrides.settings, compare);
+  for (size_t i = 0; i < panes.size(); ++i) {
+    demos::RenderOptions options;
+    options.video_path = demos::pane_video_path(video_path, int(i) + 1);
+    overrides.apply(panes[i], options);
+    demos::ProgressBar bar(progress, scene_path + " [" + compare.labels[i] + "]");
+    options.progress = [&bar](int done, int total) { bar.update(done, total); };
+    demos::render_scene(panes[i], options);
+    bar.finish();
+  }
+}
+
 int render_catalogue(const std::string& scenes_directory, const std::string& out_directory, bool progress,
                      const VideoOverrides& overrides) {
   if (!fs::is_directory(scenes_directory)) {
@@ -238,8 +257,11 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
     options.video_path = default_video_path(scene.string(), out_directory);
     options.poster_path = demos::poster_path(options.video_path);
     exit_code = std::max(exit_code, render_one(scene.string(), options, overrides, progress));
+    render_panes_alone(scene.string(), options.video_path, overrides, progress);
   }
   std::fprintf(stderr, "rendered %zu scenes into %s/\n", scenes.size(), out_directory.c_str());
+  const int videos = demos::write_gallery(scenes_directory, out_directory);
+  std::fprintf(stderr, "wrote %s/index.html (%d videos)\n", out_directory.c_str(), videos);
   return exit_code;
 }
 
@@ -349,6 +371,16 @@ int main(int argc, char** argv) {
   catalogue->add_option("-o,--output", out_directory, "Directory for the videos")->capture_default_str();
   add_video_options(catalogue, catalogue_overrides);
 
+  auto* gallery = app.add_subcommand("gallery", "Write OUT/index.html: every video of the catalogue, for students");
+  gallery->footer(std::string("\nThe catalogue writes it too, after its videos. It works opened from disk and served by any\n"
+                              "static server.\n\nExamples:\n"
+                              "  impulse gallery -o out && xdg-open out/index.html\n"
+                              "  impulse gallery --scenes my_course/ -o videos/ && python3 -m http.server -d videos\n") +
+                  kExitCodes);
+  std::string gallery_scenes = "assets/scenes", gallery_out = "out";
+  gallery->add_option("--scenes", gallery_scenes, "Directory of the scene files the videos were made from")->capture_default_str();
+  gallery->add_option("-o,--output", gallery_out, "Directory of the videos; index.html goes there")->capture_default_str();
+
   auto* simulate = app.add_subcommand("simulate", "Simulate a scene and write its numbers as CSV, without pictures");
   simulate->footer(std::string("\nExamples:\n"
                                "  impulse simulate assets/scenes/bounce.toml --trace bodies.csv\n"
@@ -411,6 +443,12 @@ int main(int argc, char** argv) {
       demos::RenderOptions options = output_options(compare_video_path, default_comparison_path(compare_paths, vary),
                                                     compare_png_directory, compare_frame_list);
       return render_comparison(compare_paths, vary, options, compare_overrides, progress);
+    }
+    if (*gallery) {
+      if (!fs::is_directory(gallery_out)) throw std::invalid_argument("no video directory '" + gallery_out + "' (render the catalogue first)");
+      const int videos = demos::write_gallery(gallery_scenes, gallery_out);
+      std::fprintf(stderr, "wrote %s/index.html (%d videos)\n", gallery_out.c_str(), videos);
+      return 0;
     }
     if (*catalogue) return render_catalogue(scenes_directory, out_directory, progress, catalogue_overrides);
     if (*verify) {

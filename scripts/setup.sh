@@ -17,6 +17,7 @@ packages=(
   ffmpeg                                          # benchmark peer only (render_bench's naive path); impulse never runs it
   clang libclang-rt-14-dev                        # tests: the libFuzzer target (tests/fuzz; clang's fuzzer and sanitizer runtimes)
   llvm                                            # tests: llvm-symbolizer, for the sanitizers' stack traces
+  chromium python3                                # tests: the gallery opened in headless Chromium, served by Python's http.server
 )
 
 missing=()

@@ -64,6 +64,13 @@ std::vector<std::vector<CheckResult>> Film::check_results() const {
   return results;
 }
 
+std::vector<double> Film::impact_times() const {
+  std::vector<double> times;
+  for (const auto& film : films_) times.insert(times.end(), film->impact_times().begin(), film->impact_times().end());
+  std::sort(times.begin(), times.end());
+  return times;
+}
+
 void Film::next(FilmPicture& picture) {
   picture.panes.resize(films_.size());
   for (size_t i = 0; i < films_.size(); ++i) {

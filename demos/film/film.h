@@ -48,6 +48,7 @@ class Film {
   int next_frame() const { return films_.front()->next_frame(); }
   double video_time_of(double time) const { return films_.front()->video_time_of(time); }
   int poster_frame() const { return films_.front()->poster_frame(); }
+  std::vector<double> impact_times() const;  // every pane's, in order: s of simulated time
   const PaneLayout& layout() const { return layout_; }
   std::vector<std::vector<CheckResult>> check_results() const;  // each pane's scene's [[check]]s
   void next(FilmPicture& picture);  // the next frame, from 0 up to frame_count() - 1

@@ -81,6 +81,51 @@ void write_captions(const Scene& scene, const Film& film, const std::string& pat
 
 }  // namespace
 
+std::string chapters_path(const std::string& video_path) {
+  return std::filesystem::path(video_path).replace_extension(".chapters.vtt").string();
+}
+
+namespace {
+
+// WebVTT chapters (a player's chapter menu): one at the start, and one at each impact that slows
+// the video, impacts within kChapterGap s after one joining its chapter; or, without such
+// impacts, one at each caption. Returns false (and writes nothing) when there is but one chapter.
+constexpr double kChapterGap = 0.5;
+
+bool write_chapters(const Scene& scene, const Film& film, const std::string& path) {
+  std::vector<std::pair<double, std::string>> starts{{0.0, "Start"}};  // simulated s, title
+  double last_impact = -kChapterGap;
+  for (const double time : film.impact_times()) {
+    if (time - last_impact < kChapterGap || time < 1e-3) continue;
+    last_impact = time;
+    char title[48];
+    std::snprintf(title, sizeof title, "Impact at t = %.2f s", time);
+    starts.emplace_back(time, title);
+  }
+  if (starts.size() == 1)
+    for (const CaptionCue& caption : scene.captions)
+      if (caption.start > starts.back().first) starts.emplace_back(caption.start, caption.text);
+  if (starts.size() < 2) return false;
+  render::PartFile part(path);
+  {
+    std::ofstream file(part.part_path());
+    file << "WEBVTT\n";
+    const double end = film.video_time_of(1e300);
+    for (size_t i = 0; i < starts.size(); ++i) {
+      const double from = film.video_time_of(starts[i].first);
+      const double to = i + 1 < starts.size() ? film.video_time_of(starts[i + 1].first) : end;
+      if (!(to > from)) continue;
+      file << "\n" << i + 1 << "\n" << vtt_time(from) << " --> " << vtt_time(to) << "\n" << starts[i].second << "\n";
+    }
+    file.close();
+    if (!file) throw render::OutputError("cannot write " + part.part_path());
+  }
+  part.commit();
+  return true;
+}
+
+}  // namespace
+
 std::string frame_file(const std::string& directory, int64_t index) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%05lld.png", static_cast<long long>(index));
@@ -182,6 +227,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   pipeline.finish();
   if (encoder) encoder->finish();
   if (encoder && !scene.captions.empty()) write_captions(scene, film, captions_path(options.video_path));
+  if (encoder) write_chapters(scene, film, chapters_path(options.video_path));
   return film.check_results();
 }
 

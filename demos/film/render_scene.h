@@ -37,8 +37,10 @@ std::vector<CheckResult> render_scene(const Scene& scene, const RenderOptions& o
 // pane's checks.
 std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& panes, const RenderOptions& options);
 
-// The captions track and the poster written beside a video: NAME.mp4 -> NAME.vtt, NAME.png.
+// The captions track, the chapters track and the poster written beside a video: NAME.mp4 ->
+// NAME.vtt, NAME.chapters.vtt (at the impacts that slow the video, else at the captions), NAME.png.
 std::string captions_path(const std::string& video_path);
+std::string chapters_path(const std::string& video_path);
 std::string poster_path(const std::string& video_path);
 
 // The name a frame's PNG gets: DIRECTORY/frame_00042.png.

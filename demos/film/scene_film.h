@@ -45,6 +45,7 @@ class SceneFilm {
   // A frame where something happens, for a poster: a quarter second of video after the first
   // impact that slows the video, else the middle frame.
   int poster_frame() const;
+  const std::vector<double>& impact_times() const { return impact_times_; }  // s: those that slow the video
   std::vector<CheckResult> check_results() const { return take_.check_results(); }
   int next_frame() const { return frame_; }
   // Fills `picture` with the next frame (from 0 up to frame_count() - 1).
