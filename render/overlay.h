@@ -19,6 +19,15 @@ struct OverlayLabel {
   Colour colour{0.1f, 0.1f, 0.1f};
 };
 
+// Lines of text in a box whose top-left corner is `corner`, e.g. an equation with numbers in it;
+// the first line is its heading.
+struct OverlayPanel {
+  Vec2f corner;                     // top left, or top right with from_right
+  bool from_right = false;
+  std::vector<std::string> lines;
+  Colour colour{0.1f, 0.1f, 0.1f};  // of the heading
+};
+
 // One line of the legend: a short arrow (or dot) in `colour`, then `text`. When
 // `scale_pixels` > 0 the arrow is that long, e.g. what 1 N·s is on screen.
 struct LegendEntry {
@@ -59,6 +68,7 @@ struct Overlay {
   float captions_left = 0.0f;         // captions_right > captions_left: centred between these x
   float captions_right = 0.0f;        // instead (a comparison's empty cell)
   std::vector<OverlayLabel> labels;
+  std::vector<OverlayPanel> panels;
   std::string clock;                  // top right, e.g. "t = 1.25 s"
   std::string playback;               // under the clock, e.g. "slow motion ×0.25"; empty: none
   bool playback_highlight = false;    // draw `playback` in bold vermillion (slow motion is on)
@@ -67,7 +77,7 @@ struct Overlay {
   float plots_row_top = -1.0f;        // >= 0: the plots in a centred row from this y down instead
 
   bool empty() const {
-    return title.empty() && captions.empty() && labels.empty() && clock.empty() && playback.empty() &&
+    return title.empty() && captions.empty() && labels.empty() && panels.empty() && clock.empty() && playback.empty() &&
            legend.empty() && plots.empty();
   }
 };

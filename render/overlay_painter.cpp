@@ -122,6 +122,7 @@ struct OverlayPainter::Cairo {
   void plots(const Overlay& overlay, double top);
   void legend(const Overlay& overlay, double top);
   void labels(const Overlay& overlay);
+  void panels(const Overlay& overlay);
   void captions(const Overlay& overlay);
   void composite_onto(Frame& frame);
 };
@@ -234,12 +235,18 @@ void OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
     panel(cr, x, y, plot_width, plot_height, 8 * scale, 0.85);
     mark(x, y, plot_width, plot_height);
 
+    // The latest values, right-aligned, the last series rightmost (the unit is in the heading,
+    // unless the values leave it no room).
+    set_font(cr, title_size, true, true);
+    double values_width = 0;
+    for (const PlotSeries& series : plot.series)
+      if (!series.points.empty()) values_width += text_width(cr, three_figures(series.points.back().y())) + 0.6 * title_size;
     set_font(cr, title_size, true);
+    std::string heading = plot.unit.empty() ? plot.title : plot.title + " (" + plot.unit + ")";
+    if (text_width(cr, heading) + values_width > plot_width - 2 * pad) heading = plot.title;
     set_colour(cr, kInk);
-    const std::string heading = plot.unit.empty() ? plot.title : plot.title + " (" + plot.unit + ")";
     cairo_move_to(cr, x + pad, y + pad + title_size * 0.8);
     cairo_show_text(cr, heading.c_str());
-    // The latest values, right-aligned, the last series rightmost (the unit is in the heading).
     set_font(cr, title_size, true, true);
     double value_right = x + plot_width - pad;
     for (auto series = plot.series.rbegin(); series != plot.series.rend(); ++series) {
@@ -316,6 +323,30 @@ void OverlayPainter::Cairo::labels(const Overlay& overlay) {
     cairo_stroke_preserve(cr);
     set_colour(cr, {label.colour.r * 0.8f, label.colour.g * 0.8f, label.colour.b * 0.8f});
     cairo_fill(cr);
+  }
+}
+
+void OverlayPainter::Cairo::panels(const Overlay& overlay) {
+  cairo_t* cr = context.get();
+  const double size = 15 * scale, line = size * 1.4, pad = 10 * scale;
+  for (const OverlayPanel& panel : overlay.panels) {
+    double box_width = 0;
+    for (size_t i = 0; i < panel.lines.size(); ++i) {
+      set_font(cr, size, i == 0, i > 0);
+      box_width = std::max(box_width, text_width(cr, panel.lines[i]));
+    }
+    const double box_height = line * panel.lines.size() + 2 * pad - 0.3 * line;
+    const double left = panel.from_right ? panel.corner.x() - box_width - 2 * pad : panel.corner.x();
+    const double x = std::clamp(left, 0.0, std::max(0.0, width - box_width - 2 * pad));
+    const double y = std::clamp(double(panel.corner.y()), 0.0, std::max(0.0, height - box_height));
+    impulse::render::panel(cr, x, y, box_width + 2 * pad, box_height, 8 * scale, 0.9);
+    mark(x, y, box_width + 2 * pad, box_height);
+    for (size_t i = 0; i < panel.lines.size(); ++i) {
+      set_font(cr, size, i == 0, i > 0);
+      set_colour(cr, i == 0 ? panel.colour : kInk);
+      cairo_move_to(cr, x + pad, y + pad + size * 0.9 + line * i);
+      cairo_show_text(cr, panel.lines[i].c_str());
+    }
   }
 }
 
@@ -426,6 +457,7 @@ void OverlayPainter::paint(const Overlay& overlay, Frame& frame) {
   c.clock(overlay, clock_bottom);
   c.plots(overlay, clock_bottom);
   c.labels(overlay);
+  c.panels(overlay);
   c.captions(overlay);
   if (cairo_status(c.context.get()) != CAIRO_STATUS_SUCCESS) {
     throw std::runtime_error(std::string("overlay: cairo failed: ") + cairo_status_to_string(cairo_status(c.context.get())));

@@ -114,5 +114,51 @@ TEST(Film, PanesShareTheirMomentsAndSlowDownAroundAnyPanesImpact) {
   }
 }
 
+// [overlay] equation = "eq8": from the impact on, a panel fills eq. 8 in with the hit's numbers,
+// the solver's impulse beside it, and the printed -(1 - e)'s. 1 kg at 3 m/s onto 2 kg at rest,
+// e = 0.7: J = 1.7 * 3 / 1.5 = 3.40 N s; printed 0.3 * 3 / 1.5 = 0.60 N s.
+TEST(Film, EquationEightIsFilledInWithTheImpactsNumbers) {
+  const auto dir = testing::scratch("film_compare_test", "equation");
+  const demos::Scene scene = testing::scene_from(dir, R"(
+[scene]
+duration = 1.0
+[world]
+gravity = [0, 0, 0]
+[video]
+width = 320
+height = 180
+fps = 10
+[overlay]
+equation = "eq8"
+[playback]
+slow_motion_impulse = 1.0
+[[body]]
+name = "light"
+shape = "sphere"
+radius = 0.3
+mass = 1.0
+restitution = 0.7
+position = [-1.5, 0, 0]
+velocity = [3, 0, 0]
+[[body]]
+name = "heavy"
+shape = "sphere"
+radius = 0.3
+mass = 2.0
+position = [0.5, 0, 0]
+)");
+  demos::Film film({{&scene, ""}}, 320, 180);
+  demos::FilmPicture picture;
+  film.next(picture);
+  EXPECT_TRUE(picture.overlay.panels.empty()) << "before the impact";
+  while (film.next_frame() < film.frame_count()) film.next(picture);
+  ASSERT_EQ(picture.overlay.panels.size(), 1u);
+  const std::vector<std::string>& lines = picture.overlay.panels[0].lines;
+  ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(lines[2], "  = -(1+0.70)\u00b7(-3.00) / (1/1.00 + 1/2.00)");
+  EXPECT_EQ(lines[3], "  = 3.40 N\u00b7s    solver: 3.40 N\u00b7s");
+  EXPECT_EQ(lines[4], "printed -(1-e): 0.60 N\u00b7s, too little");
+}
+
 }  // namespace
 }  // namespace impulse

@@ -90,10 +90,15 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
   const float scale = float(frame_height_) / 720.0f;  // as the painter's
   std::vector<render::OverlayLabel> labels;
   std::vector<render::Plot> plots;
+  std::vector<render::OverlayPanel> panels;
   for (size_t i = 0; i < pictures.size(); ++i) {
     const render::Overlay& pane = pictures[i].overlay;
     const render::Vec2f origin = layout_.origins[i].cast<float>();
     for (const render::OverlayLabel& label : pane.labels) labels.push_back({label.anchor + origin, label.text, label.colour});
+    for (render::OverlayPanel panel : pane.panels) {
+      panel.corner += origin;
+      panels.push_back(std::move(panel));
+    }
     // Inside its bottom left corner, clear of the title and legend over the first pane's top.
     labels.push_back({origin + render::Vec2f(-2 * scale, float(layout_.height) - 4 * scale), panes_[i].label, pane_colour(int(i))});
     for (size_t k = 0; k < pane.plots.size(); ++k) {
@@ -109,6 +114,7 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
   }
   overlay = std::move(pictures.front().overlay);
   overlay.labels = std::move(labels);
+  overlay.panels = std::move(panels);
   overlay.plots = std::move(plots);
   overlay.plots_row_top = layout_.plots_row_top;
   if (panes_.size() == 3) {  // the captions in the grid's empty cell, clear of the panes

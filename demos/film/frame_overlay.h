@@ -32,6 +32,7 @@ struct FrameState {
   const std::vector<BodyPose>* poses = nullptr;
   const std::vector<physics::ContactRecord>* contacts = nullptr;
   int64_t plotted_steps = 0;  // steps the plots show
+  const ImpactNumbers* impact = nullptr;  // the latest impact, for eq. 8 on screen
   render::Camera camera;
 };
 
@@ -44,6 +45,7 @@ class FrameOverlay {
 
  private:
   void add_label(const FrameState& state, const render::CameraView& view, render::Overlay& overlay) const;
+  void add_equation(const ImpactNumbers& impact, render::Overlay& overlay) const;
 
   const Scene& scene_;
   TakeSummary summary_;

@@ -103,6 +103,7 @@ void SceneFilm::next(ScenePicture& picture) {
   state.poses = &sample.poses;
   state.contacts = &sample.contacts;
   state.plotted_steps = sample.plotted_steps;
+  state.impact = &sample.impact;
   state.camera = camera_path_.at(moment.time, followed >= 0 ? sample.poses[followed].position : physics::Vec3::Zero());
 
   picture.draw_list =

@@ -42,7 +42,11 @@ WorldTake::WorldTake(const Scene& scene)
 bool WorldTake::finished() const { return !(world_.time() < scene_.duration + 0.5 * scene_.world.time_step); }
 
 void WorldTake::step() {
+  std::vector<physics::Vec3> velocities_before;
+  if (scene_.overlay.equation == "eq8")
+    for (const physics::Body& body : world_.bodies()) velocities_before.push_back(body.velocity);
   world_.step();
+  if (!velocities_before.empty()) note_impact(velocities_before);
   checks_.step(world_);
   const physics::StepRecord& record = world_.record();
   const auto& bodies = world_.bodies();
@@ -74,6 +78,33 @@ void WorldTake::step() {
   kept.contacts = record.contacts;
 }
 
+// The strongest contact of an impact step (one that slows the video), with the relative normal
+// velocity its bodies had before the step: eq. 8's numbers, next to what the solver gave.
+void WorldTake::note_impact(const std::vector<physics::Vec3>& velocities_before) {
+  const physics::StepRecord& record = world_.record();
+  const auto& bodies = world_.bodies();
+  const physics::ContactRecord* strongest = nullptr;
+  for (const physics::ContactRecord& contact : record.contacts)
+    if (contact.normal_impulse >= scene_.playback.slow_motion_impulse &&
+        (strongest == nullptr || contact.normal_impulse > strongest->normal_impulse))
+      strongest = &contact;
+  if (strongest == nullptr) return;
+  ImpactNumbers impact;
+  impact.time = record.time;
+  impact.body_a = strongest->body_a;
+  impact.body_b = strongest->body_b;
+  const physics::Vec3 va = impact.body_a >= 0 ? velocities_before[impact.body_a] : physics::Vec3::Zero();
+  const physics::Vec3 vb = impact.body_b >= 0 ? velocities_before[impact.body_b] : physics::Vec3::Zero();
+  impact.approach = (va - vb).dot(strongest->normal);
+  const double ea = impact.body_a >= 0 ? bodies[impact.body_a].material.restitution : 0;
+  const double eb = impact.body_b >= 0 ? bodies[impact.body_b].material.restitution : 0;
+  impact.restitution = std::max(ea, eb);  // the pair's, as the solver mixes it
+  impact.inverse_mass_a = impact.body_a >= 0 ? bodies[impact.body_a].inv_mass : 0;
+  impact.inverse_mass_b = impact.body_b >= 0 ? bodies[impact.body_b].inv_mass : 0;
+  impact.impulse = strongest->normal_impulse;
+  impacts_.push_back(impact);
+}
+
 void WorldTake::sample(double time, double video_time, FrameSample& sample) {
   // The steps until the world is at or past this frame's moment; the bodies are drawn in between.
   while (taken_time_ < time - 1e-9) {
@@ -96,6 +127,8 @@ void WorldTake::sample(double time, double video_time, FrameSample& sample) {
   sample.contacts = hold_.shown(video_time);
   if (!contacts_drawn_) keep_label_candidate(sample.contacts);
   sample.plotted_steps = steps_taken_;
+  while (impacts_shown_ < impacts_.size() && impacts_[impacts_shown_].time <= taken_time_ + 1e-9) ++impacts_shown_;
+  if (impacts_shown_ > 0) sample.impact = impacts_[impacts_shown_ - 1];
 }
 
 // Without marks, a frame's contacts matter only to the impulse label: keep the one it would write.

@@ -15,6 +15,16 @@
 
 namespace impulse::demos {
 
+// An impact's numbers, for eq. 8 on screen: J = -(1 + e) v_ab.n / (1/m_a + 1/m_b).
+struct ImpactNumbers {
+  double time = -1;        // s: the step it happened in; < 0: none yet
+  int body_a = -1, body_b = -1;
+  double approach = 0;     // m/s: v_ab.n just before the step (negative while closing; n pushes a)
+  double restitution = 0;  // e of the pair
+  double inverse_mass_a = 0, inverse_mass_b = 0;  // 1/kg (0: static)
+  double impulse = 0;      // N s: what the solver gave, along n on a
+};
+
 // One world at one frame.
 struct FrameSample {
   std::vector<BodyPose> poses;             // between the two steps around the frame's moment
@@ -22,6 +32,7 @@ struct FrameSample {
   std::vector<char> awake;                 // of each body after the last step taken
   std::vector<physics::ContactRecord> contacts;  // held on screen (only the label's, if no marks are drawn)
   int64_t plotted_steps = 0;               // steps the plots show
+  ImpactNumbers impact;                    // the latest impact at or before the frame ([overlay] equation)
 };
 
 class WorldTake {
@@ -52,6 +63,7 @@ class WorldTake {
     std::vector<physics::ContactRecord> contacts;
   };
   void keep_label_candidate(std::vector<physics::ContactRecord>& contacts) const;
+  void note_impact(const std::vector<physics::Vec3>& velocities_before);
 
   const Scene& scene_;
   physics::World world_;
@@ -67,6 +79,8 @@ class WorldTake {
   std::vector<BodyPose> before_, after_;
   std::vector<physics::Vec3> velocities_;
   std::vector<char> awake_;
+  std::vector<ImpactNumbers> impacts_;  // for eq. 8 on screen, in time order
+  size_t impacts_shown_ = 0;            // those at or before the last sample
 };
 
 }  // namespace impulse::demos

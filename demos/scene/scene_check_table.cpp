@@ -11,9 +11,9 @@ void read_checks(TableReader& top, Scene& scene) {
     ++index;
     TableReader r(*item.as_table(), scene.path, "[[check]] " + std::to_string(index));
     CheckSpec check;
-    check.kind = r.choice("kind", "", {"momentum", "energy", "at_rest", "inside", "height", "drift", "penetration"});
-    const bool needs_body = check.kind == "at_rest" || check.kind == "inside" || check.kind == "height" ||
-                            check.kind == "drift";
+    check.kind = r.choice("kind", "", {"momentum", "energy", "at_rest", "inside", "velocity", "height", "drift", "penetration"});
+    const bool needs_body = check.kind == "at_rest" || check.kind == "inside" || check.kind == "velocity" ||
+                            check.kind == "height" || check.kind == "drift";
     const std::string body = r.string("body", "");
     if (needs_body) {
       if (body.empty()) r.fail(nullptr, "body", "missing: the name of the body it is about");

@@ -65,6 +65,8 @@ void CheckWatch::observe(const physics::World& world, double time, bool first) {
     } else if (check.kind == "inside" || check.kind == "drift") {
       if (begins) state.start_vector = body->position;
       state.last = body->position;
+    } else if (check.kind == "velocity") {
+      state.last = body->velocity;
     } else if (check.kind == "height") {
       state.extreme = begins ? bottom(*body) : std::max(state.extreme, bottom(*body));
     } else if (check.kind == "penetration" && !first) {
@@ -95,6 +97,9 @@ std::vector<CheckResult> CheckWatch::results() const {
     } else if (check.kind == "inside") {
       result.passed = (state.last.array() >= check.min.array()).all() && (state.last.array() <= check.max.array()).all();
       result.measured = format("ended at [%.3g, %.3g, %.3g] m", state.last.x(), state.last.y(), state.last.z());
+    } else if (check.kind == "velocity") {
+      result.passed = (state.last.array() >= check.min.array()).all() && (state.last.array() <= check.max.array()).all();
+      result.measured = format("ended at [%.3g, %.3g, %.3g] m/s", state.last.x(), state.last.y(), state.last.z());
     } else if (check.kind == "drift") {
       const double moved = (state.last - state.start_vector).norm();
       result.passed = moved <= check.distance;

@@ -7,6 +7,7 @@
 //                         `tolerance` times its size there (a share: 0.01 is 1 %)
 //   kind = "at_rest"      `body` is slower than `speed` (m/s) at every step of the window
 //   kind = "inside"       `body`'s centre is within `min` .. `max` (m) at the window's end
+//   kind = "velocity"     `body`'s velocity is within `min` .. `max` (m/s) at the window's end
 //   kind = "height"       `body`'s highest centre in the window is within `min` .. `max` (m), or,
 //                         with `ratio`, that height over its starting height is `ratio` ± `tolerance`
 //   kind = "drift"        `body` ends the window at most `distance` (m) from where it began it

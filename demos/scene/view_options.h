@@ -46,6 +46,7 @@ struct OverlayOptions {
   std::string plot_body;         // whose speed the "speed" plot shows (default: the first moving body)
   std::string label = "impulse"; // the arrow that gets its value written beside it: impulse, velocity, none
   std::string label_body;        // on which body (default: whichever has the largest)
+  std::string equation = "none"; // "eq8": eq. 8 filled in with the latest impact's numbers (needs slow motion)
 };
 
 // [[camera.keyframe]]: where the camera is at `time` s; it eases between keyframes.
