@@ -23,8 +23,9 @@ PaneLayout pane_layout(int panes, int width, int height, bool plots) {
   const double gap = 8 * scale, top = 72 * scale;                  // under the title and the clock
   const double plots_band = plots_row ? 108 * scale : 0;           // a plot and its gaps
   const double plots_column = plots && !plots_row ? 300 * scale : 0;
+  const double captions_band = rows == 1 ? 100 * scale : 0;        // two lines of caption, under one row
   const double room_width = width - plots_column - (columns + 1) * gap;
-  const double room_height = height - top - plots_band - rows * gap;
+  const double room_height = height - top - plots_band - captions_band - rows * gap;
   const double pane_width = std::min(room_width / columns, room_height / rows * width / height);
   layout.width = int(pane_width) / 2 * 2;
   layout.height = int(pane_width * height / width) / 2 * 2;
@@ -32,7 +33,7 @@ PaneLayout pane_layout(int panes, int width, int height, bool plots) {
   const double block_width = columns * layout.width + (columns - 1) * gap;
   const double block_height = rows * layout.height + (rows - 1) * gap + plots_band;
   const double left = (width - plots_column - block_width) / 2;
-  const double upper = top + std::max(0.0, (height - top - block_height) / 2);
+  const double upper = top + std::max(0.0, (height - top - captions_band - block_height) / 2);
   for (int pane = 0; pane < panes; ++pane) {
     const int column = pane % columns, row = pane / columns;
     layout.origins.emplace_back(int(std::lround(left + column * (layout.width + gap))),

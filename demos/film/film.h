@@ -22,8 +22,9 @@ struct Pane {
 };
 
 // Where the panes go in a width x height frame: two side by side, three or four in a grid of two
-// columns, each of the frame's aspect, under a band for the title and clock. Plots go in a row
-// under one row of panes, else in the column at the right.
+// columns, each of the frame's aspect, under a band for the title and clock. Under one row of
+// panes go the plots, in a row, and a band left for the captions; with two rows the plots take
+// the column at the right.
 struct PaneLayout {
   int width = 0;                          // of each pane, pixels
   int height = 0;
