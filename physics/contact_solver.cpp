@@ -265,6 +265,15 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, ManifoldLanes& block
   set_lane(block.twist_b, l, sb.inv_inertia * first.normal);
   Real twist_radius = 0;
   for (int i = 0; i < m.count; ++i) twist_radius += (constraints_[m.first + i].anchor_a - centre).norm() / m.count;
+  // One point of a sphere: the soft contact presses a disc of radius a = sqrt(2 R d) at depth d
+  // (R = 1 / (1/R_a + 1/R_b), a flat face's 1/R being 0), over which friction resists a twist up
+  // to 2/3 mu N a (uniform pressure). Without it a sphere spinning about the normal spins for ever.
+  if (m.count == 1) {
+    auto curvature = [](const Body& body) { return body.shape.type == ShapeType::sphere ? 1 / body.shape.radius : Real(0); };
+    const Real k = curvature(body_a) + curvature(body_b);
+    const Real depth = std::max(-(first.adjusted_separation + (first.anchor_a - first.anchor_b).dot(first.normal)), Real(0));
+    if (k > 0) twist_radius = Real(2) / 3 * std::sqrt(2 * depth / k);
+  }
   block.twist_radius[l] = twist_radius;
   m.local_anchor_a = body_a.orientation.conjugate() * centre_a;
   m.local_anchor_b = body_b.orientation.conjugate() * centre_b;
