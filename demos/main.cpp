@@ -239,8 +239,24 @@ void render_panes_alone(const std::string& scene_path, const std::string& video_
   }
 }
 
+// Which scenes of a catalogue this run renders: one shard of N (--shard K/N: every Nth scene in
+// name order, from the Kth), and, with --changed-only, only those whose video is missing or older
+// than the scene file or the program.
+struct CatalogueChoice {
+  int shard = 1, shards = 1;
+  bool changed_only = false;
+};
+
+bool unchanged(const fs::path& scene, const std::string& video_path) {
+  std::error_code error;
+  const auto video = fs::last_write_time(video_path, error);
+  if (error) return false;
+  const auto program = fs::last_write_time("/proc/self/exe", error);
+  return !error && video > fs::last_write_time(scene, error) && !error && video > program;
+}
+
 int render_catalogue(const std::string& scenes_directory, const std::string& out_directory, bool progress,
-                     const VideoOverrides& overrides) {
+                     const VideoOverrides& overrides, const CatalogueChoice& choice) {
   if (!fs::is_directory(scenes_directory)) {
     std::fprintf(stderr, "impulse: no scene directory '%s' (run from the repository root, or pass --scenes DIR)\n",
                  scenes_directory.c_str());
@@ -251,15 +267,23 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
     if (entry.path().extension() == ".toml") scenes.push_back(entry.path());
   std::sort(scenes.begin(), scenes.end());
   fs::create_directories(out_directory);
-  int exit_code = 0;
-  for (const fs::path& scene : scenes) {
+  int exit_code = 0, rendered = 0;
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    if (int(i % size_t(choice.shards)) != choice.shard - 1) continue;
+    const fs::path& scene = scenes[i];
     demos::RenderOptions options;
     options.video_path = default_video_path(scene.string(), out_directory);
     options.poster_path = demos::poster_path(options.video_path);
+    if (choice.changed_only && unchanged(scene, options.video_path)) {
+      std::fprintf(stderr, "[%zu/%zu] %s: unchanged, kept %s\n", i + 1, scenes.size(), scene.c_str(), options.video_path.c_str());
+      continue;
+    }
+    std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, scenes.size(), scene.c_str());
     exit_code = std::max(exit_code, render_one(scene.string(), options, overrides, progress));
     render_panes_alone(scene.string(), options.video_path, overrides, progress);
+    ++rendered;
   }
-  std::fprintf(stderr, "rendered %zu scenes into %s/\n", scenes.size(), out_directory.c_str());
+  std::fprintf(stderr, "rendered %d of %zu scenes into %s/\n", rendered, scenes.size(), out_directory.c_str());
   const int videos = demos::write_gallery(scenes_directory, out_directory);
   std::fprintf(stderr, "wrote %s/index.html (%d videos)\n", out_directory.c_str(), videos);
   return exit_code;
@@ -363,12 +387,20 @@ int main(int argc, char** argv) {
   auto* catalogue = app.add_subcommand("catalogue", "Render every scene of a directory into videos");
   catalogue->footer(std::string("\nExamples:\n"
                                 "  impulse catalogue -o out\n"
-                                "  impulse catalogue --scenes my_course/ -o videos/ --quality low\n") +
+                                "  impulse catalogue --scenes my_course/ -o videos/ --quality low\n"
+                                "  impulse catalogue --shard 2/4 -o out     # the second of four CI jobs\n"
+                                "  impulse catalogue --changed-only -o out  # only scenes edited since their video\n") +
                     kExitCodes);
   std::string scenes_directory = "assets/scenes", out_directory = "out";
   VideoOverrides catalogue_overrides;
   catalogue->add_option("--scenes", scenes_directory, "Directory of scene files")->capture_default_str();
   catalogue->add_option("-o,--output", out_directory, "Directory for the videos")->capture_default_str();
+  CatalogueChoice catalogue_choice;
+  std::string shard;
+  catalogue->add_option("--shard", shard, "K/N: render only every Nth scene in name order, from the Kth (CI jobs in parallel)")
+      ->type_name("K/N");
+  catalogue->add_flag("--changed-only", catalogue_choice.changed_only,
+                      "Skip a scene whose video is newer than its scene file and the program (not after --set or --quality changes)");
   add_video_options(catalogue, catalogue_overrides);
 
   auto* gallery = app.add_subcommand("gallery", "Write OUT/index.html: every video of the catalogue, for students");
@@ -450,7 +482,21 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "wrote %s/index.html (%d videos)\n", gallery_out.c_str(), videos);
       return 0;
     }
-    if (*catalogue) return render_catalogue(scenes_directory, out_directory, progress, catalogue_overrides);
+    if (*catalogue) {
+      if (!shard.empty()) {
+        const size_t slash = shard.find('/');
+        try {
+          catalogue_choice.shard = std::stoi(shard.substr(0, slash));
+          catalogue_choice.shards = std::stoi(shard.substr(slash + 1));
+        } catch (const std::exception&) {
+          catalogue_choice.shards = 0;
+        }
+        if (slash == std::string::npos || catalogue_choice.shards < 1 || catalogue_choice.shards > 1000 ||
+            catalogue_choice.shard < 1 || catalogue_choice.shard > catalogue_choice.shards)
+          throw std::invalid_argument("--shard wants K/N with 1 <= K <= N (like 2/4), got '" + shard + "'");
+      }
+      return render_catalogue(scenes_directory, out_directory, progress, catalogue_overrides, catalogue_choice);
+    }
     if (*verify) {
       demos::Scene scene = load(scene_path, verify_overrides.settings);
       demos::RenderOptions options;

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -323,6 +324,32 @@ TEST(Compare, ABadVaryIsRefusedSayingWhy) {
   EXPECT_EQ(typo.exit_code, 1) << typo.describe();
   EXPECT_NE(typo.stderr_text.find("did you mean 'restitution'"), std::string::npos) << typo.stderr_text;
   EXPECT_FALSE(fs::exists(video));
+}
+
+// catalogue --shard K/N renders every Nth scene from the Kth; --changed-only keeps a video newer
+// than its scene file, and renders it again once the scene file changes.
+TEST(Catalogue, ShardsAndChangedOnly) {
+  const fs::path dir = work_directory();
+  fs::create_directories(dir / "scenes");
+  const std::string small = std::string(kSlide) + "[video]\nwidth = 160\nheight = 120\nfps = 10\n";
+  for (const char* name : {"a.toml", "b.toml", "c.toml"}) std::ofstream(dir / "scenes" / name) << small;
+  const std::string scenes = (dir / "scenes").string(), out = (dir / "out").string();
+  const testing::ChildResult second = impulse({"-q", "catalogue", "--scenes", scenes, "-o", out, "--shard", "2/2"});
+  ASSERT_TRUE(second.succeeded()) << second.describe();
+  EXPECT_FALSE(fs::exists(dir / "out" / "a.mp4"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "b.mp4"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "c.mp4"));
+  EXPECT_EQ(impulse({"-q", "catalogue", "--scenes", scenes, "-o", out, "--shard", "3/2"}).exit_code, 1);
+
+  const testing::ChildResult first = impulse({"-q", "catalogue", "--scenes", scenes, "-o", out, "--changed-only"});
+  ASSERT_TRUE(first.succeeded()) << first.describe();
+  EXPECT_NE(first.stderr_text.find("b.toml: unchanged, kept"), std::string::npos) << first.stderr_text;
+  EXPECT_NE(first.stderr_text.find("rendered 2 of 3 scenes"), std::string::npos) << first.stderr_text;
+  fs::last_write_time(dir / "scenes" / "b.toml", fs::file_time_type::clock::now() + std::chrono::seconds(5));
+  const testing::ChildResult again = impulse({"-q", "catalogue", "--scenes", scenes, "-o", out, "--changed-only"});
+  ASSERT_TRUE(again.succeeded()) << again.describe();
+  EXPECT_NE(again.stderr_text.find("rendered 1 of 3 scenes"), std::string::npos) << again.stderr_text;
+  EXPECT_EQ(again.stderr_text.find("b.toml: unchanged"), std::string::npos) << again.stderr_text;
 }
 
 std::string contents(const fs::path& path) {
