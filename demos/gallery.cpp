@@ -82,7 +82,11 @@ int write_gallery(const std::string& scenes_directory, const std::string& out_di
   if (fs::is_directory(scenes_directory))
     for (const auto& entry : fs::directory_iterator(scenes_directory))
       if (entry.path().extension() == ".toml") scene_files.push_back(entry.path());
-  std::sort(scene_files.begin(), scene_files.end());
+  // Sections before exercises (s1_..., then ex1_...), each in name order.
+  std::sort(scene_files.begin(), scene_files.end(), [](const fs::path& a, const fs::path& b) {
+    const bool a_exercise = a.filename().string().rfind("ex", 0) == 0, b_exercise = b.filename().string().rfind("ex", 0) == 0;
+    return a_exercise != b_exercise ? b_exercise : a < b;
+  });
 
   std::ostringstream page;
   page << "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
