@@ -248,11 +248,12 @@ struct CatalogueChoice {
 };
 
 bool unchanged(const fs::path& scene, const std::string& video_path) {
-  std::error_code error;
-  const auto video = fs::last_write_time(video_path, error);
-  if (error) return false;
-  const auto program = fs::last_write_time("/proc/self/exe", error);
-  return !error && video > fs::last_write_time(scene, error) && !error && video > program;
+  std::error_code video_error, scene_error, program_error;
+  const auto video = fs::last_write_time(video_path, video_error);
+  const auto scene_time = fs::last_write_time(scene, scene_error);
+  const auto program = fs::last_write_time("/proc/self/exe", program_error);
+  if (video_error || scene_error || program_error) return false;
+  return video > scene_time && video > program;
 }
 
 int render_catalogue(const std::string& scenes_directory, const std::string& out_directory, bool progress,

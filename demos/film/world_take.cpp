@@ -81,11 +81,13 @@ void WorldTake::step() {
 // The strongest contact of an impact step (one that slows the video), with the relative normal
 // velocity its bodies had before the step: eq. 8's numbers, next to what the solver gave.
 void WorldTake::note_impact(const std::vector<physics::Vec3>& velocities_before) {
+  const double threshold = scene_.playback.slow_motion_impulse;
+  if (!(threshold > 0)) return;  // no impacts without a threshold: resting contacts are none
   const physics::StepRecord& record = world_.record();
   const auto& bodies = world_.bodies();
   const physics::ContactRecord* strongest = nullptr;
   for (const physics::ContactRecord& contact : record.contacts)
-    if (contact.normal_impulse >= scene_.playback.slow_motion_impulse &&
+    if (contact.normal_impulse >= threshold &&
         (strongest == nullptr || contact.normal_impulse > strongest->normal_impulse))
       strongest = &contact;
   if (strongest == nullptr) return;

@@ -119,7 +119,6 @@ void read_overlay(TableReader& top, Scene& scene) {
   o.label = r.choice("label", o.label, {"impulse", "velocity", "none"});
   o.label_body = body_name(r, "label_body", scene);
   o.equation = r.choice("equation", o.equation, {"none", "eq8"});
-  if (o.equation == "eq8" && !(scene.playback.slow_motion_impulse > 0) && !r.get("equation")) o.equation = "none";
   r.finish();
 }
 
