@@ -7,7 +7,7 @@
 namespace impulse::physics {
 
 void apply_workshop_impulses(std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states,
-                             bool friction) {
+                             bool friction, bool printed_sign) {
   for (ContactConstraint& c : constraints) {
     BodyState& s0 = states[c.a];
     BodyState& s1 = states[c.b];
@@ -22,11 +22,13 @@ void apply_workshop_impulses(std::vector<ContactConstraint>& constraints, std::v
     const Vec3 dv = relative_velocity(s0, s1, r0, r1);
     if (-dv.dot(normal) < -0.01) continue;
 
-    // NORMAL impulse, eq. 13 with (1+e), then the listing's bias "proportional to penetration".
+    // NORMAL impulse, eq. 13 with (1+e) (or the printed 1-e), then the listing's bias "proportional
+    // to penetration".
     const Real e = c.restitution;
+    const Real factor = printed_sign ? 1 - e : 1 + e;
     const Real norm_div = normal.dot(normal) * (s0.inv_mass + s1.inv_mass) +
                           normal.dot((s0.inv_inertia * r0.cross(normal)).cross(r0) + (s1.inv_inertia * r1.cross(normal)).cross(r1));
-    Real jn = -(1 + e) * dv.dot(normal) / norm_div;
+    Real jn = -factor * dv.dot(normal) / norm_div;
     jn = jn + penetration * 1.5;  // the "hack fix" (line 85): a length added to an impulse
     apply_impulse(s0, s1, r0, r1, jn * normal);
     c.total_normal_impulse += jn;

@@ -12,8 +12,9 @@ namespace impulse::physics {
 // Listing 1 (AddCollisionImpulse), once per touching contact: the normal impulse of eq. 13 with
 // (1+e), plus the listing's "hack fix" jn += 1.5 * penetration, then an unclamped tangent impulse
 // along the sliding direction (skipped when there is none: normalising a zero vector is NaN).
+// `printed_sign` runs the erratum instead, -(1 - e) as eq. 8 and 13 are printed: for teaching only.
 void apply_workshop_impulses(std::vector<ContactConstraint>& constraints, std::vector<BodyState>& states,
-                             bool friction);
+                             bool friction, bool printed_sign = false);
 
 // Section 1's projection method: each touching pair is moved apart along the normal by its
 // penetration, shared by inverse mass. Velocities are left as they are.

@@ -118,7 +118,7 @@ void World::solve_impulse(Real h) {
 
 // Listing 1: respond to the contacts found at the start of the step, then move (one full step).
 void World::solve_workshop(Real dt) {
-  apply_workshop_impulses(contact_solver_.constraints(), states_, settings_.contact.friction);
+  apply_workshop_impulses(contact_solver_.constraints(), states_, settings_.contact.friction, settings_.printed_eq8_sign);
   integrate_velocities(dt);
   solve_joints(dt, true);
   integrate_positions(dt);

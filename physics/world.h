@@ -29,6 +29,8 @@ struct WorldSettings {
                                    // this into its soft contacts (stack_sink.h); 0: always `substeps`
   Real linear_slop = 0.005;        // m; speculative contacts start 4 slops away
   ResponseMethod method = ResponseMethod::impulse;
+  bool printed_eq8_sign = false;   // workshop method only: eq. 8/13's numerator as printed, -(1 - e),
+                                   // the erratum, run to show what goes wrong (ERRATA.md)
   ContactSolverSettings contact;
   PenaltySettings penalty;
   SleepSettings sleep;

@@ -54,6 +54,25 @@ TEST(WorkshopMethod, PenetrationHackAddsImpulse) {
   EXPECT_NEAR(world.bodies()[ball].velocity.y(), 0.075, 1e-9);
 }
 
+// Eq. 8 as printed, -(1 - e) (the erratum the workshop scene s3_erratum runs): at e = 1 a head-on
+// hit gets no impulse but the hack fix's, where -(1 + e) gives 2 m v / (1 + m_a/m_b); at e = 0.7
+// it gives 0.3 of the approach's impulse instead of 1.7.
+TEST(WorkshopMethod, PrintedSignGivesTooLittleImpulse) {
+  for (const bool printed : {false, true})
+    for (const Real e : {0.7, 1.0}) {
+      WorldSettings settings = without_gravity(ResponseMethod::workshop);
+      settings.printed_eq8_sign = printed;
+      World world(settings);
+      add_sphere(world, Vec3(-0.5, 0, 0), 0.3, 1.0, Vec3(3, 0, 0), {e, 0});
+      add_sphere(world, Vec3(0.09, 0, 0), 0.3, 2.0, Vec3::Zero(), {0, 0});  // 1 cm deep
+      world.step();
+      const StepRecord& record = world.record();
+      ASSERT_EQ(record.contacts.size(), 1u);
+      const Real expected = (printed ? 1 - e : 1 + e) * 3 / (1 / 1.0 + 1 / 2.0) + 1.5 * 0.01;  // eq. 8, hack fix
+      EXPECT_NEAR(record.contacts[0].normal_impulse, expected, 1e-9) << "printed " << printed << ", e " << e;
+    }
+}
+
 // Section 1: projection moves the bodies apart but leaves their velocities alone, so a ball on
 // the ground keeps gaining downward speed it never uses.
 TEST(ProjectionMethod, SeparatesPositionsButNotVelocities) {

@@ -91,6 +91,11 @@ void read_world(TableReader& top, Scene& scene) {
   w.min_substeps = r.integer("min_substeps", w.min_substeps, 1, 64);
   w.stack_sink = r.number("stack_sink", w.stack_sink, 0, 1);
   w.method = *physics::method_from_name(r.choice("method", "impulse", physics::method_names()));
+  if (r.choice("eq8_sign", "corrected", {"corrected", "printed"}) == "printed") {
+    if (w.method != physics::ResponseMethod::workshop)
+      r.fail(r.get("eq8_sign"), "eq8_sign", "only listing 1 runs eq. 8 as printed: set method = \"workshop\" too");
+    w.printed_eq8_sign = true;
+  }
   w.contact.friction = r.boolean("friction", w.contact.friction);
   w.contact.restitution_threshold = r.number("restitution_threshold", w.contact.restitution_threshold, 0);
   w.contact.contact_hertz = r.number("contact_hertz", w.contact.contact_hertz, 0, 10000, true);
