@@ -32,7 +32,6 @@ void ContactSolver::fill_lanes(int step, const ManifoldConstraint& m) {
   set_lane(block.tangent1, l, m.tangent1);
   set_lane(block.tangent2, l, m.tangent2);
   block.friction[l] = m.friction;
-  set_lane(block.drift, l, m.drift);
   block.tangent_impulse1[l] = m.tangent_impulse1;
   block.tangent_impulse2[l] = m.tangent_impulse2;
   block.twist_impulse[l] = m.twist_impulse;
@@ -62,7 +61,6 @@ void ContactSolver::copy_back(int step) {
   m.twist_impulse = block.twist_impulse[l];
   m.total_tangent_impulse1 = block.total_tangent_impulse1[l];
   m.total_tangent_impulse2 = block.total_tangent_impulse2[l];
-  if (block.slipped[l]) m.slipped = true;
   for (int i = 0; i < m.count; ++i) {
     constraints_[m.first + i].normal_impulse = lane_points_[block.first_point + i].normal_impulse[l];
     constraints_[m.first + i].total_normal_impulse = lane_points_[block.first_point + i].total_normal_impulse[l];
@@ -135,7 +133,12 @@ bool ContactSolver::solve_manifolds(int index, int width, std::vector<BodyState>
 //
 // Friction: Coulomb friction at the points' centroid, within the disc of radius mu times their
 // total normal impulse, and a twist about the normal within mu times that times the points'
-// spread; static friction also pulls back the drift from where the pair first touched.
+// spread. Both passes hold the centroid's sliding velocity at zero with the full (hard) tangent
+// mass: static friction has no position target, so a pair that rocks from a face onto an edge
+// is not pulled back towards where it first touched (such a pull fed the rocking of resting
+// heaps), and nothing leaks from the friction impulse in the biased pass (a soft friction let a
+// heap slide apart at m/s). The twist is left to the relax pass: solved in the biased one too, a
+// wall of boxes one box thick (the 21-box pyramid) swayed out of its plane.
 template <int N, bool Backwards, bool UseBias>
 void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<BodyState>& states, Real inv_h) {
   BodyState* sa[2] = {&states[block.a[0]], &states[block.a[1]]};
@@ -204,45 +207,28 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<
 
   // Friction, if either lane has any.
   Real2 j1 = block.tangent_impulse1, j2 = block.tangent_impulse2, twist = block.twist_impulse;
-  Mask2 slipped = {0, 0};
   if (any(block.friction != 0)) {
     const Real2 limit = block.friction * normal_sum;
     const V3 dv = va - vb;
-    Real2 v1 = dot(dv, block.tangent1) + dot(wa, block.ra_cross_t1) - dot(wb, block.rb_cross_t1);
-    Real2 v2 = dot(dv, block.tangent2) + dot(wa, block.ra_cross_t2) - dot(wb, block.rb_cross_t2);
-    Real2 mass_scale = splat(1), leak = splat(0);
-    if constexpr (UseBias) {
-      // Without the pull back to the anchor, tiny slips add up and stacks creep.
-      auto turned = [&](const Q4& dq, const V3& centre, Real2 inv_mass) {  // a still body has not turned
-        const Mask2 moves = inv_mass > 0;
-        return any(moves) ? select(moves, rotate(dq, centre), centre) : centre;
-      };
-      const V3 moved_centre = dp + (turned(dq_a, block.centre_a, inv_mass_a) - turned(dq_b, block.centre_b, inv_mass_b)) -
-                              (block.centre_a - block.centre_b);
-      const V3 drift = block.bias_rate * (block.drift + moved_centre);
-      v1 = v1 + dot(drift, block.tangent1);
-      v2 = v2 + dot(drift, block.tangent2);
-      mass_scale = block.mass_scale;
-      leak = block.impulse_scale;
-    }
+    const Real2 v1 = dot(dv, block.tangent1) + dot(wa, block.ra_cross_t1) - dot(wb, block.rb_cross_t1);
+    const Real2 v2 = dot(dv, block.tangent2) + dot(wa, block.ra_cross_t2) - dot(wb, block.rb_cross_t2);
     const Real2 old1 = j1, old2 = j2, old_twist = twist;
-    j1 = old1 + (-block.tangent_mass1 * mass_scale * v1 - leak * old1);
-    j2 = old2 + (-block.tangent_mass2 * mass_scale * v2 - leak * old2);
-    // Within the Coulomb disc; asking for more than it (by a hair) means the pair slides.
+    j1 = old1 - block.tangent_mass1 * v1;
+    j2 = old2 - block.tangent_mass2 * v2;
+    // Within the Coulomb disc.
     const Real2 length_squared = j1 * j1 + j2 * j2;
     const Mask2 outside = length_squared > limit * limit;
     if (any(outside)) {
       const Real2 scale = select(outside, limit / sqrt(length_squared), splat(1));
       j1 = j1 * scale;
       j2 = j2 * scale;
-      const Real2 slip = 1.0001 * limit + 1e-12;
-      slipped = outside & (length_squared > slip * slip);
     }
-    const Real2 twist_limit = limit * block.twist_radius;
-    twist = select(block.twist_radius > 0, clamp(old_twist - block.twist_mass * dot(wa - wb, normal), -twist_limit, twist_limit), old_twist);
-    // Not pressed together (a speculative pair): no friction, and nothing to anchor.
+    if constexpr (!UseBias) {
+      const Real2 twist_limit = limit * block.twist_radius;
+      twist = select(block.twist_radius > 0, clamp(old_twist - block.twist_mass * dot(wa - wb, normal), -twist_limit, twist_limit), old_twist);
+    }
+    // Not pressed together (a speculative pair): no friction.
     const Mask2 unpressed = limit == 0;
-    slipped = slipped | unpressed;
     j1 = select(unpressed, splat(0), j1);
     j2 = select(unpressed, splat(0), j2);
     twist = select(unpressed, splat(0), twist);
@@ -259,7 +245,6 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<
   block.tangent_impulse1 = select(solved, j1, block.tangent_impulse1);
   block.tangent_impulse2 = select(solved, j2, block.tangent_impulse2);
   block.twist_impulse = select(solved, twist, block.twist_impulse);
-  block.slipped = block.slipped | (slipped & solved);
   for (int l = 0; l < 2; ++l) {
     if (!solved[l]) continue;
     // A still body's state is not even written: the other thread may be reading it.

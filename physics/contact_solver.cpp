@@ -187,7 +187,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
       ManifoldLanes& block = begin_lanes(int(step), m);
       prepare_manifold(m, block, lane_of_step_[step].lane, bodies[contacts[first].body_a], bodies[contacts[first].body_b], states);
       if (same_pair != other_pair) {
-        warm_start_friction(m, previous_warm_manifolds_[previous_pairs_[other_pair - 1].manifold], bodies[contacts[first].body_a], bodies[contacts[first].body_b]);
+        warm_start_friction(m, previous_warm_manifolds_[previous_pairs_[other_pair - 1].manifold]);
         m.tangent_impulse1 *= warm_scale;
         m.tangent_impulse2 *= warm_scale;
         m.twist_impulse *= warm_scale;
@@ -236,8 +236,6 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, ManifoldLanes& block
   for (int i = 0; i < m.count; ++i) centre += constraints_[m.first + i].anchor_a;
   centre /= m.count;  // relative to A
   const Vec3 centre_a = centre, centre_b = centre + (first.anchor_b - first.anchor_a);
-  set_lane(block.centre_a, l, centre_a);
-  set_lane(block.centre_b, l, centre_b);
   block.tangent_mass1[l] = safe_inverse(inverse_effective_mass(sa, sb, centre_a, centre_b, first.tangent1));
   block.tangent_mass2[l] = safe_inverse(inverse_effective_mass(sa, sb, centre_a, centre_b, first.tangent2));
   // How an impulse at point j changes the normal velocity at point i (eq. 13's denominator,
@@ -275,24 +273,16 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, ManifoldLanes& block
     if (k > 0) twist_radius = Real(2) / 3 * std::sqrt(2 * depth / k);
   }
   block.twist_radius[l] = twist_radius;
-  m.local_anchor_a = body_a.orientation.conjugate() * centre_a;
-  m.local_anchor_b = body_b.orientation.conjugate() * centre_b;
   // A sphere's surface stays where it is as it turns, and a still body does not turn.
   block.turns_a[l] = sa.inv_mass > 0 && body_a.shape.type != ShapeType::sphere;
   block.turns_b[l] = sb.inv_mass > 0 && body_b.shape.type != ShapeType::sphere;
 }
 
-// Last step's friction impulses, and its anchor unless the pair slipped.
-void ContactSolver::warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous, const Body& body_a, const Body& body_b) const {
+// Last step's friction impulses.
+void ContactSolver::warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous) {
   m.tangent_impulse1 = previous.tangent_impulse1;
   m.tangent_impulse2 = previous.tangent_impulse2;
   m.twist_impulse = previous.twist_impulse;
-  if (previous.slipped) return;  // a pair that slipped is anchored afresh where it touches now
-  m.local_anchor_a = previous.local_anchor_a;
-  m.local_anchor_b = previous.local_anchor_b;
-  const Vec3 offset = (body_a.position + body_a.orientation * m.local_anchor_a) - (body_b.position + body_b.orientation * m.local_anchor_b);
-  const Vec3& normal = m.normal;
-  m.drift = offset - offset.dot(normal) * normal;
 }
 
 void ContactSolver::warm_start(std::vector<BodyState>& states) {
@@ -448,7 +438,7 @@ void ContactSolver::store_impulses() {
   schedule_.for_each_step(*team_, [&](int index) {
     copy_back(index);
     const ManifoldConstraint& m = manifolds_[index];
-    warm_manifolds_[index] = {m.first, m.count, m.slipped, m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse, m.local_anchor_a, m.local_anchor_b};
+    warm_manifolds_[index] = {m.first, m.count, m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse};
     for (int i = 0; i < m.count; ++i) warm_points_[m.first + i] = {constraints_[m.first + i].feature, constraints_[m.first + i].normal_impulse};
     ManifoldLoad& load = loads_[index];
     load = {m.a, m.b, 0, 0, constraints_[m.first].normal};

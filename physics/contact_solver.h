@@ -73,19 +73,14 @@ inline Real current_separation(const ContactConstraint& c, const BodyState& sa, 
 struct alignas(64) ManifoldConstraint {
   int a = -1, b = -1;
   int first = 0, count = 0;            // its points in the constraint list
-  bool slipped = false;
   bool bounced = false;                // restitution applied this step
   // Its points', which share them (one pair, one normal).
   Vec3 normal = Vec3::Zero(), tangent1 = Vec3::Zero(), tangent2 = Vec3::Zero();
   Real friction = 0, restitution = 0;
   Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;  // this sub-step's
-  // Static friction's anchor: where the pair first touched, in each body's frame, and how far A
-  // has slid from it over B at step start. Friction pulls that drift back until it slips.
-  Vec3 drift = Vec3::Zero();
   Real total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
   Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
   Real bounce_speed = 0;               // m/s, the speed the pair parts at after its hit
-  Vec3 local_anchor_a = Vec3::Zero(), local_anchor_b = Vec3::Zero();
 };
 
 // What the sweeps read and write, for two manifolds side by side (lanes.h): each field holds the
@@ -113,11 +108,8 @@ struct alignas(64) ManifoldLanes {
   // an impulse along t1, t2 or a twist about n turns each body (I^-1 (r x t), I^-1 n).
   V3 ra_cross_t1, ra_cross_t2, rb_cross_t1, rb_cross_t2;
   V3 turn_a1, turn_a2, turn_b1, turn_b2, twist_a, twist_b;
-  V3 centre_a, centre_b;           // the points' centroid relative to each body's centre
-  V3 drift;
   Real2 tangent_impulse1, tangent_impulse2, twist_impulse;
   Real2 total_tangent_impulse1, total_tangent_impulse2;
-  Mask2 slipped;
 };
 
 // A manifold's load at the end of a step, for StackSink: its last sub-step's impulse and the sum of
@@ -172,7 +164,7 @@ class ContactSolver {
   void prepare_manifold(ManifoldConstraint& m, ManifoldLanes& block, int lane, const Body& body_a, const Body& body_b,
                         const std::vector<BodyState>& states) const;
   struct ManifoldWarm;
-  void warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous, const Body& body_a, const Body& body_b) const;
+  static void warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous);
   // The sweeps' work on manifold `index`, or on it and the next side by side (width 2; lanes.h).
   void warm_start_manifolds(int index, int width, std::vector<BodyState>& states) const;
   // Returns whether any bounced (restitution, only with use_bias).
@@ -203,17 +195,15 @@ class ContactSolver {
   struct PairPlace { uint64_t key; int manifold; };
   std::vector<PairPlace> pairs_;
   // What the warm start needs of a step, small and apart from the constraints (the lookups then
-  // read a line or two): per point, its feature and impulse; per manifold, its points, friction
-  // and anchor. This step's (written by store_impulses()) and last step's.
+  // read a line or two): per point, its feature and impulse; per manifold, its points and friction.
+  // This step's (written by store_impulses()) and last step's.
   struct PointWarm {
     uint32_t feature = 0;
     Real normal_impulse = 0;
   };
   struct ManifoldWarm {
     int first = 0, count = 0;
-    bool slipped = false;
     Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;
-    Vec3 local_anchor_a = Vec3::Zero(), local_anchor_b = Vec3::Zero();
   };
   std::vector<PointWarm> warm_points_, previous_warm_points_;
   std::vector<ManifoldWarm> warm_manifolds_, previous_warm_manifolds_;

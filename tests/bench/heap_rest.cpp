@@ -1,0 +1,97 @@
+// heap_rest: exercise 4 on the heaps of ../shared/bench/SCENES.md with sleeping off (issue 17).
+// For each heap, friction and restitution asked for, it runs 60 s on one thread and prints the
+// fastest body (|v| + |w| r, r its bounding radius: its fastest point) at 20, 40 and 60 s, the
+// fastest from 20 s to 60 s, and how many bodies are above 1 mm/s at 60 s.
+//
+//   heap_rest [boxes|spheres|both] [mu,...] [e,...] [seconds]
+//   heap_rest both 0.4,0.5,0.6 0,0.5 60      (the default: the issue's twelve configurations)
+#include "tests/bench_world.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace impulse::physics;
+
+std::vector<Real> numbers(const std::string& text) {
+  std::vector<Real> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) out.push_back(std::strtod(item.c_str(), nullptr));
+  return out;
+}
+
+Real point_speed(const Body& body) { return body.velocity.norm() + body.angular_velocity.norm() * bounding_radius(body.shape); }
+
+// The fastest body from the first traced step on: its speed and, per body it touches, the number
+// of points, their normal impulse and how much of mu N friction uses.
+void trace(World& world, int step, Real mu) {
+  static int body = -1;
+  if (body < 0) {
+    Real fastest = 0;
+    for (int i = 0; i < int(world.bodies().size()); ++i)
+      if (!world.bodies()[i].is_static() && point_speed(world.bodies()[i]) > fastest) fastest = point_speed(world.bodies()[body = i]);
+  }
+  if (step % 2) return;
+  const Body& b = world.bodies()[body];
+  std::printf("%d body %d v %.4f w %.4f y %.3f |", step, body, b.velocity.norm(), b.angular_velocity.norm(), b.position.y());
+  struct Pair { int other, points; Real n; Vec3 t; Vec3 normal; };
+  std::vector<Pair> pairs;
+  for (const ContactRecord& c : world.record().contacts) {
+    if (c.body_a != body && c.body_b != body) continue;
+    const int other = c.body_a == body ? c.body_b : c.body_a;
+    auto it = std::find_if(pairs.begin(), pairs.end(), [&](const Pair& p) { return p.other == other; });
+    if (it == pairs.end()) { pairs.push_back({other, 0, 0, Vec3::Zero(), c.normal}); it = pairs.end() - 1; }
+    it->points++;
+    it->n += c.normal_impulse;
+    it->t += c.tangent_impulse;
+  }
+  for (const Pair& p : pairs) std::printf(" %d:%d n=%.4f f/muN=%.2f ny=%.2f", p.other, p.points, p.n, p.n > 0 ? p.t.norm() / (mu * p.n) : 0.0, p.normal.y());
+  std::printf("\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string which = argc > 1 ? argv[1] : "both";
+  const std::vector<Real> mus = numbers(argc > 2 ? argv[2] : "0.4,0.5,0.6");
+  const std::vector<Real> es = numbers(argc > 3 ? argv[3] : "0,0.5");
+  const int seconds = argc > 4 ? std::atoi(argv[4]) : 60;
+  std::vector<std::string> heaps;
+  if (which == "both" || which == "boxes") heaps.push_back("boxes");
+  if (which == "both" || which == "spheres") heaps.push_back("spheres");
+  std::printf("%-8s %4s %4s %10s %10s %10s %12s %8s\n", "heap", "mu", "e", "20s mm/s", "40s mm/s", "60s mm/s", "max>=20s", ">1mm/s");
+  for (const std::string& heap : heaps)
+    for (Real mu : mus)
+      for (Real e : es) {
+        WorldSettings settings;
+        settings.sleep.enabled = false;
+        settings.threads = 1;
+        World world = test::bench_world(heap, settings, {e, mu});
+        Real at[3] = {0, 0, 0}, late = 0;
+        int above = 0;
+        for (int step = 1; step <= seconds * 60; ++step) {
+          world.step();
+          if (step < 20 * 60) continue;
+          Real fastest = 0;
+          int count = 0;
+          for (const Body& body : world.bodies()) {
+            if (body.is_static()) continue;
+            const Real speed = point_speed(body);
+            fastest = std::max(fastest, speed);
+            count += speed > 1e-3;
+          }
+          late = std::max(late, fastest);
+          if (step % (20 * 60) == 0 && step / (20 * 60) <= 3) at[step / (20 * 60) - 1] = fastest;
+          above = count;
+          if (std::getenv("TRACE") && step >= (seconds - 2) * 60) trace(world, step, mu);
+        }
+        std::printf("%-8s %4.1f %4.1f %10.3f %10.3f %10.3f %12.3f %8d\n", heap.c_str(), mu, e, 1e3 * at[0], 1e3 * at[1], 1e3 * at[2],
+                    1e3 * late, above);
+        std::fflush(stdout);
+      }
+}
