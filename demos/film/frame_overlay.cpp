@@ -58,7 +58,8 @@ void FrameOverlay::add_label(const FrameState& state, const render::CameraView& 
     const double largest = labelled.contact != nullptr ? labelled.contact->normal_impulse : 0.0;
     // A touching contact that pushes nothing (0.00 N s) is not worth a label.
     if (!(largest >= 0.005 && largest > 1e-3 * summary_.largest_impulse)) return;
-    tip = labelled.contact->point.cast<float>() + impulse_on(*labelled.contact, labelled.body) * float(scales_.impulse);
+    tip = labelled.contact->point.cast<float>() +
+          cut_to(impulse_on(*labelled.contact, labelled.body) * float(scales_.impulse), scales_.longest_impulse);
     text = "J = " + render::three_figures(largest) + " N\u00b7s";
     colour = mark_colour::normal_impulse;
   } else if (kind == "velocity") {
@@ -72,6 +73,14 @@ void FrameOverlay::add_label(const FrameState& state, const render::CameraView& 
     if (fastest < 0) return;
     text = "v = " + render::three_figures(fastest) + " m/s";
     colour = mark_colour::velocity;
+  } else if (scene_.draw.impulses) {
+    // No label asked for, but a cut arrow's length no longer tells its value: write it.
+    const LabelledImpulse labelled = labelled_impulse(*state.contacts, bodies, -1);
+    if (labelled.contact == nullptr || !(labelled.contact->normal_impulse * scales_.impulse > scales_.longest_impulse)) return;
+    tip = labelled.contact->point.cast<float>() +
+          cut_to(impulse_on(*labelled.contact, labelled.body) * float(scales_.impulse), scales_.longest_impulse);
+    text = "J = " + render::three_figures(labelled.contact->normal_impulse) + " N\u00b7s";
+    colour = mark_colour::normal_impulse;
   } else {
     return;
   }

@@ -16,10 +16,11 @@ double round_down(double x) {
   return decade;
 }
 
+constexpr double kLongestArrow = 1.5;  // m, the largest value's arrow
+
 double auto_scale(double chosen, double largest) {
-  constexpr double kLongest = 1.5;  // m, the largest value's arrow
   if (chosen > 0) return chosen;
-  return largest > 1e-9 ? round_down(kLongest / largest) : 1.0;
+  return largest > 1e-9 ? round_down(kLongestArrow / largest) : 1.0;
 }
 
 std::string number(double value) {
@@ -50,8 +51,27 @@ ArrowScales arrow_scales(const Scene& scene, const TakeSummary& summary) {
     found = true;
   }
   const double normal = draw.normal_length > 0 ? draw.normal_length : std::clamp(1.5 * smallest, 0.05, 1.0);
-  return {auto_scale(draw.impulse_scale, summary.largest_impulse), auto_scale(draw.velocity_scale, summary.largest_speed),
-          normal};
+  const double fitted = summary.impulse_to_fit > 0 ? summary.impulse_to_fit : summary.largest_impulse;
+  return {auto_scale(draw.impulse_scale, fitted), draw.impulse_scale > 0 ? INFINITY : 1.5 * kLongestArrow,
+          auto_scale(draw.velocity_scale, summary.largest_speed), normal};
+}
+
+double impulse_to_fit(const std::vector<ImpulsePeak>& peaks) {
+  constexpr double kMoment = 0.25;  // s around the largest
+  constexpr double kOutweighs = 4;
+  if (peaks.empty()) return 0;
+  const ImpulsePeak largest = *std::max_element(peaks.begin(), peaks.end(), [](const ImpulsePeak& a, const ImpulsePeak& b) {
+    return a.impulse < b.impulse;
+  });
+  double others = 0;
+  for (const ImpulsePeak& peak : peaks)
+    if (std::abs(peak.time - largest.time) > kMoment) others = std::max(others, peak.impulse);
+  return others > 0 && largest.impulse > kOutweighs * others ? others : largest.impulse;
+}
+
+render::Vec3f cut_to(const render::Vec3f& arrow, double longest) {
+  const float length = arrow.norm();
+  return length > longest ? arrow * float(longest / length) : arrow;
 }
 
 std::vector<render::LegendEntry> legend(const DrawOptions& draw, const ArrowScales& scales,

@@ -7,6 +7,7 @@
 #include "render/overlay.h"
 #include "render/palette.h"
 
+#include <cmath>
 #include <vector>
 
 namespace impulse::demos {
@@ -22,14 +23,30 @@ inline constexpr render::Colour joint{0.45f, 0.45f, 0.47f};             // grey:
 
 struct ArrowScales {
   double impulse = 1.0;        // m of arrow per N s
+  double longest_impulse = INFINITY;  // m: longer impulse arrows are cut to this, their value written
   double velocity = 1.0;       // m of arrow per m/s
   double normal_length = 0.6;  // m
 };
 
 // The scene's scales, or (for 0) a round number (1, 2 or 5 times a power of ten) that draws the
-// largest value of the run about 1.5 m long; normals (for 0) 1.5 times the smallest moving
-// body's radius or half-size.
+// largest value of the run (for impulses, summary.impulse_to_fit) about 1.5 m long; normals (for
+// 0) 1.5 times the smallest moving body's radius or half-size. With an automatic impulse scale,
+// impulse arrows longer than 1.5 times the fitted one are cut to that length.
 ArrowScales arrow_scales(const Scene& scene, const TakeSummary& summary);
+
+struct ImpulsePeak {
+  double time = 0;     // s
+  double impulse = 0;  // N s: the step's largest, normal or friction, on a moving body
+};
+
+// The impulse the automatic scale fits: the run's largest, unless the impulses within 0.25 s of
+// it outweigh every other moment's more than 4 times. Then the largest of the other moments, so
+// that one hard landing does not shrink every other arrow of the run to nothing; the landing's
+// arrow is cut (ArrowScales::longest_impulse) and its value written beside it.
+double impulse_to_fit(const std::vector<ImpulsePeak>& peaks);
+
+// `arrow` no longer than `longest`.
+render::Vec3f cut_to(const render::Vec3f& arrow, double longest);
 
 // The legend for the marks the scene draws. Arrow entries show how long a round value (1 N s,
 // 0.5 m/s, ...) is on screen at the camera's target.

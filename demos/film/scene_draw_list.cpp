@@ -109,9 +109,10 @@ render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::
       if (!moves(bodies, body)) continue;
       const float sign = body == contact.body_a ? 1.0f : -1.0f;
       if (draw.impulses)
-        add_arrow(list, point, impulse_on(contact, body) * float(scales.impulse), mark_colour::normal_impulse, impulse_layer);
+        add_arrow(list, point, cut_to(impulse_on(contact, body) * float(scales.impulse), scales.longest_impulse),
+                  mark_colour::normal_impulse, impulse_layer);
       if (draw.friction)
-        add_arrow(list, point, sign * to_float(contact.tangent_impulse) * float(scales.impulse),
+        add_arrow(list, point, cut_to(sign * to_float(contact.tangent_impulse) * float(scales.impulse), scales.longest_impulse),
                   mark_colour::friction_impulse, friction_layer);
     }
     if (draw.contact_points) list.points.push_back({point, mark_colour::contact_point, 4.0f});

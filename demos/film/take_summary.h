@@ -8,6 +8,7 @@ namespace impulse::demos {
 struct TakeSummary {
   std::vector<double> impact_times;  // s: steps with a contact impulse >= slow_motion_impulse
   double largest_impulse = 0;        // N s, normal or friction, on a moving body
+  double impulse_to_fit = 0;         // N s: what the automatic arrow scale fits (marks.h)
   double largest_speed = 0;          // m/s of a moving body
   std::vector<double> plot_maxima;   // one per scene.overlay.plots
 };

@@ -53,14 +53,17 @@ void WorldTake::step() {
   if (needs_summary(scene_)) {
     const double threshold = scene_.playback.slow_motion_impulse;
     bool impact = false;
+    double step_largest = 0;
     for (const physics::ContactRecord& contact : record.contacts) {
       const bool moving = (contact.body_a >= 0 && !bodies[contact.body_a].is_static()) ||
                           (contact.body_b >= 0 && !bodies[contact.body_b].is_static());
       if (!moving) continue;
-      summary_.largest_impulse = std::max(
-          {summary_.largest_impulse, double(contact.normal_impulse), double(contact.tangent_impulse.norm())});
+      step_largest = std::max({step_largest, double(contact.normal_impulse), double(contact.tangent_impulse.norm())});
       if (threshold > 0 && contact.normal_impulse >= threshold) impact = true;
     }
+    summary_.largest_impulse = std::max(summary_.largest_impulse, step_largest);
+    if (step_largest > 0) impulse_peaks_.push_back({record.time, step_largest});
+    if (finished()) summary_.impulse_to_fit = impulse_to_fit(impulse_peaks_);
     if (impact) summary_.impact_times.push_back(record.time);
     for (const physics::Body& body : bodies)
       if (!body.is_static()) summary_.largest_speed = std::max(summary_.largest_speed, double(body.velocity.norm()));
