@@ -43,7 +43,7 @@ struct PlotSeries {
   std::vector<Vec2f> points;
 };
 
-// A small line plot that grows as the video plays: x is simulated time from 0 to `x_end`.
+// A small line plot that grows as the video plays: x is simulated time from `x_start` to `x_end`.
 // The y range is fixed when y_max > y_min (a plot that keeps its scale reads best), else it
 // follows the points. Several series share the axes (a comparison: one per variant, in its
 // colour); the heading ends with each series' latest value, in its colour.
@@ -51,6 +51,7 @@ struct Plot {
   std::string title;   // e.g. "kinetic energy"
   std::string unit;    // e.g. "J"
   float x_end = 1.0f;  // s: the right edge, so the curves grow towards it
+  float x_start = 0.0f;  // s: the left edge
   float y_min = 0.0f;
   float y_max = 0.0f;
   std::vector<PlotSeries> series;

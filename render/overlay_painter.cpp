@@ -273,11 +273,11 @@ void OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
       if (!(y_max > y_min)) y_max = y_min + 1;
       y_max += 0.1 * (y_max - y_min);
     }
-    const double x_end = plot.x_end > 0 ? plot.x_end : 1.0;
-    auto to_x = [&](double t) { return left + (right - left) * std::clamp(t / x_end, 0.0, 1.0); };
+    const double x_start = plot.x_start, x_end = plot.x_end > x_start ? plot.x_end : x_start + 1.0;
+    auto to_x = [&](double t) { return left + (right - left) * std::clamp((t - x_start) / (x_end - x_start), 0.0, 1.0); };
     auto to_y = [&](double v) { return area_bottom - (area_bottom - area_top) * std::clamp((v - y_min) / (y_max - y_min), 0.0, 1.0); };
 
-    // Axes: the time axis at zero (or the bottom), the value axis at t = 0.
+    // Axes: the time axis at zero (or the bottom), the value axis at x_start.
     cairo_set_line_width(cr, 1.0 * scale);
     set_colour(cr, kMutedInk, 0.6);
     const double zero = to_y(std::clamp(0.0, y_min, y_max));

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <filesystem>
 #include <fstream>
 
@@ -102,6 +104,8 @@ TEST(SceneOptions, ErrorsNameTheLineFieldAndWhatToDo) {
             std::string::npos);
   EXPECT_NE(error_of("[overlay]\nplots = [\"energy\"]\n").find("unknown plot 'energy' (known: kinetic_energy, momentum, speed)"),
             std::string::npos);
+  EXPECT_NE(error_of("[overlay]\nplot_from = 60\n").find("field 'plot_from': must come before the scene's end"),
+            std::string::npos);
   EXPECT_NE(error_of("[video]\nquality = \"ultra\"\n").find("unknown value 'ultra' (known: low, medium, high)"),
             std::string::npos);
   EXPECT_NE(error_of("[draw]\nimpulse = true\n").find("field 'impulse': unknown field"), std::string::npos);
@@ -185,6 +189,25 @@ TEST(Plots, SeriesStayBoundedAndKeepTheirMaximum) {
   EXPECT_GE(shown[0].series[0].points.size(), 1024u);
   EXPECT_NEAR(shown[0].series[0].points.back().x(), 600.0, 1.0);
   EXPECT_DOUBLE_EQ(plots.maxima()[0], 99.0);
+}
+
+// [overlay] plot_from: a landing's spike before it neither shows nor sets the value range, so the
+// small speeds after it read.
+TEST(Plots, StartFromAChosenTime) {
+  PlotRecorder plots({PlotKind::kinetic_energy}, -1, 2.0);
+  physics::StepRecord record;
+  for (int step = 0; step < 6 * 60; ++step) {
+    record.time = step / 60.0;
+    record.kinetic_energy = record.time < 1 ? 50.0 : 0.1 + 0.01 * std::sin(step);
+    plots.add_step(record, {});
+  }
+  EXPECT_NEAR(plots.maxima()[0], 0.11, 1e-3);
+  const std::vector<render::Plot> shown = plots.plots(plots.steps(), 6, plots.maxima(), "");
+  ASSERT_EQ(shown.size(), 1u);
+  EXPECT_FLOAT_EQ(shown[0].x_start, 2.0f);
+  ASSERT_FALSE(shown[0].series[0].points.empty());
+  EXPECT_GE(shown[0].series[0].points.front().x(), 2.0f);
+  EXPECT_LT(shown[0].y_max, 0.2f);
 }
 
 }  // namespace

@@ -103,7 +103,7 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
     // Inside its bottom left corner, clear of the title and legend over the first pane's top.
     labels.push_back({origin + render::Vec2f(-2 * scale, float(layout_.height) - 4 * scale), panes_[i].label, pane_colour(int(i))});
     for (size_t k = 0; k < pane.plots.size(); ++k) {
-      if (k == plots.size()) plots.push_back({pane.plots[k].title, pane.plots[k].unit, pane.plots[k].x_end, 0, 0, {}});
+      if (k == plots.size()) plots.push_back({pane.plots[k].title, pane.plots[k].unit, pane.plots[k].x_end, pane.plots[k].x_start, 0, 0, {}});
       render::Plot& plot = plots[k];
       plot.y_min = std::min(plot.y_min, pane.plots[k].y_min);
       plot.y_max = std::max(plot.y_max, pane.plots[k].y_max);

@@ -42,8 +42,8 @@ int plotted_body(const std::vector<physics::Body>& bodies, const std::string& na
   return -1;
 }
 
-PlotRecorder::PlotRecorder(std::vector<PlotKind> kinds, int body)
-    : kinds_(std::move(kinds)), body_(body), samples_(kinds_.size()), maxima_(kinds_.size(), 0.0) {}
+PlotRecorder::PlotRecorder(std::vector<PlotKind> kinds, int body, double from)
+    : kinds_(std::move(kinds)), body_(body), from_(from), samples_(kinds_.size()), maxima_(kinds_.size(), 0.0) {}
 
 void PlotRecorder::add_step(const physics::StepRecord& record, const std::vector<physics::Body>& bodies) {
   for (size_t i = 0; i < kinds_.size(); ++i) {
@@ -53,7 +53,7 @@ void PlotRecorder::add_step(const physics::StepRecord& record, const std::vector
       case PlotKind::momentum: value = record.linear_momentum.norm(); break;
       case PlotKind::speed: value = body_ >= 0 ? bodies[body_].velocity.norm() : 0.0; break;
     }
-    maxima_[i] = std::max(maxima_[i], value);
+    if (record.time >= from_) maxima_[i] = std::max(maxima_[i], value);
     samples_[i].push_back(render::Vec2f(float(record.time), float(value)));
   }
   ++steps_;
@@ -71,9 +71,11 @@ std::vector<render::Plot> PlotRecorder::plots(int64_t steps, double duration, co
     plot.unit = plot_unit(kinds_[i]);
     render::PlotSeries& series = plot.series.emplace_back();
     series.colour = plot_colour(kinds_[i]);
+    plot.x_start = float(from_);
     plot.x_end = float(duration);
     if (i < maxima.size() && maxima[i] > 0) plot.y_max = float(1.1 * maxima[i]);
-    for (int64_t j = 0; j < steps && j < int64_t(samples_[i].size()); j += stride) series.points.push_back(samples_[i][j]);
+    for (int64_t j = 0; j < steps && j < int64_t(samples_[i].size()); j += stride)
+      if (samples_[i][j].x() >= from_) series.points.push_back(samples_[i][j]);
     plots.push_back(std::move(plot));
   }
   return plots;

@@ -17,7 +17,8 @@ int plotted_body(const std::vector<physics::Body>& bodies, const std::string& na
 
 class PlotRecorder {
  public:
-  PlotRecorder(std::vector<PlotKind> kinds, int body);
+  // Maxima and the plots' points from simulated time `from` on.
+  PlotRecorder(std::vector<PlotKind> kinds, int body, double from = 0);
   void add_step(const physics::StepRecord& record, const std::vector<physics::Body>& bodies);
   int64_t steps() const { return steps_; }
   // The plots of the first `steps` samples, with fixed value ranges when `maxima` (one per kind)
@@ -32,6 +33,7 @@ class PlotRecorder {
 
   std::vector<PlotKind> kinds_;
   int body_;
+  double from_;
   std::vector<std::vector<render::Vec2f>> samples_;  // one per kind, one per step
   std::vector<double> maxima_;                       // one per kind
   int64_t steps_ = 0;

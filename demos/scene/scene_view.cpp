@@ -4,6 +4,7 @@
 #include "demos/scene/video_quality.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace impulse::demos {
 
@@ -116,6 +117,12 @@ void read_overlay(TableReader& top, Scene& scene) {
     }
   }
   o.plot_body = body_name(r, "plot_body", scene);
+  o.plot_from = r.number("plot_from", o.plot_from, 0);
+  if (o.plot_from >= scene.duration) {
+    char duration[32];
+    std::snprintf(duration, sizeof duration, "%g", scene.duration);
+    r.fail(r.get("plot_from"), "plot_from", std::string("must come before the scene's end ([scene] duration = ") + duration + " s)");
+  }
   o.label = r.choice("label", o.label, {"impulse", "velocity", "none"});
   o.label_body = body_name(r, "label_body", scene);
   o.equation = r.choice("equation", o.equation, {"none", "eq8"});

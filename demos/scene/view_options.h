@@ -44,6 +44,7 @@ struct OverlayOptions {
   bool legend = true;            // what each arrow colour means, and its scale
   std::vector<PlotKind> plots;   // live plots down the right side
   std::string plot_body;         // whose speed the "speed" plot shows (default: the first moving body)
+  double plot_from = 0;          // s: the plots' time axis starts here (to leave out a landing's spike)
   std::string label = "impulse"; // the arrow that gets its value written beside it: impulse, velocity, none
   std::string label_body;        // on which body (default: whichever has the largest)
   std::string equation = "none"; // "eq8": eq. 8 filled in with the latest impact's numbers (needs slow motion)
