@@ -2,6 +2,8 @@
 
 #include <csignal>
 #include <cstring>
+#include <stdexcept>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "render/part_file.h"
@@ -9,7 +11,15 @@
 namespace impulse::demos {
 namespace {
 
+// Plain atomics only: the handler reads them.
+constexpr int kMostChildren = 64;
+volatile sig_atomic_t children[kMostChildren] = {};
+
 extern "C" void on_interrupt(int signal_number) {
+  for (int i = 0; i < kMostChildren; ++i)
+    if (children[i] > 0) kill(pid_t(children[i]), signal_number);
+  for (int i = 0; i < kMostChildren; ++i)
+    if (children[i] > 0) waitpid(pid_t(children[i]), nullptr, 0);
   render::remove_unfinished_part_files();
   static const char message[] = "\nimpulse: interrupted; the unfinished video was deleted, earlier videos are as they were\n";
   [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, message, sizeof message - 1);
@@ -25,6 +35,20 @@ void install_interrupt_handlers() {
   sigemptyset(&action.sa_mask);
   for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigaction(signal_number, &action, nullptr);
   std::signal(SIGXFSZ, SIG_IGN);
+}
+
+void watch_child(int pid) {
+  for (int i = 0; i < kMostChildren; ++i)
+    if (children[i] == 0) {
+      children[i] = pid;
+      return;
+    }
+  throw std::logic_error("more than 64 child processes at once");
+}
+
+void forget_child(int pid) {
+  for (int i = 0; i < kMostChildren; ++i)
+    if (children[i] == pid) children[i] = 0;
 }
 
 }  // namespace impulse::demos

@@ -10,4 +10,9 @@ namespace impulse::demos {
 // EFBIG and is reported as an output error instead of killing the process with its .part file.
 void install_interrupt_handlers();
 
+// Child processes that an interrupt reaches first: the signal is passed on to each and waited
+// for (each deletes its own .part files), then this process ends as above.
+void watch_child(int pid);
+void forget_child(int pid);
+
 }  // namespace impulse::demos

@@ -1,4 +1,5 @@
 // The `impulse` command line: scene files in, teaching videos out.
+#include "demos/child_jobs.h"
 #include "demos/gallery.h"
 #include "demos/interrupts.h"
 #include "demos/progress_bar.h"
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -241,11 +243,33 @@ void render_panes_alone(const std::string& scene_path, const std::string& video_
 
 // Which scenes of a catalogue this run renders: one shard of N (--shard K/N: every Nth scene in
 // name order, from the Kth), and, with --changed-only, only those whose video is missing or older
-// than the scene file or the program.
+// than the scene file or the program. --jobs N renders N at once, each in a child process that
+// renders `only` one scene file.
 struct CatalogueChoice {
   int shard = 1, shards = 1;
   bool changed_only = false;
+  int jobs = 1;
+  std::string only;                         // a file name: this process is one job of a --jobs run
+  std::vector<std::string> child_arguments;  // for each job: this command line, less what chooses scenes
 };
+
+// The command line for a job of --jobs: the same options, less those that chose the scenes (this
+// process chose) and the progress bar (one a child would interleave with the others').
+std::vector<std::string> job_arguments(int argc, char** argv) {
+  std::vector<std::string> kept{"--quiet"};
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--jobs" || word == "--shard") {
+      ++i;
+      continue;
+    }
+    if (word.starts_with("--jobs=") || word.starts_with("--shard=") || word == "--changed-only" || word == "--progress" ||
+        word == "-q" || word == "--quiet")
+      continue;
+    kept.push_back(word);
+  }
+  return kept;
+}
 
 bool unchanged(const fs::path& scene, const std::string& video_path) {
   std::error_code video_error, scene_error, program_error;
@@ -268,23 +292,50 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
     if (entry.path().extension() == ".toml") scenes.push_back(entry.path());
   std::sort(scenes.begin(), scenes.end());
   fs::create_directories(out_directory);
-  int exit_code = 0, rendered = 0;
+  std::vector<size_t> chosen;
   for (size_t i = 0; i < scenes.size(); ++i) {
     if (int(i % size_t(choice.shards)) != choice.shard - 1) continue;
-    const fs::path& scene = scenes[i];
-    demos::RenderOptions options;
-    options.video_path = default_video_path(scene.string(), out_directory);
-    options.poster_path = demos::poster_path(options.video_path);
-    if (choice.changed_only && unchanged(scene, options.video_path)) {
-      std::fprintf(stderr, "[%zu/%zu] %s: unchanged, kept %s\n", i + 1, scenes.size(), scene.c_str(), options.video_path.c_str());
+    if (!choice.only.empty() && scenes[i].filename() != choice.only) continue;
+    const std::string video_path = default_video_path(scenes[i].string(), out_directory);
+    if (choice.changed_only && unchanged(scenes[i], video_path)) {
+      std::fprintf(stderr, "[%zu/%zu] %s: unchanged, kept %s\n", i + 1, scenes.size(), scenes[i].c_str(), video_path.c_str());
       continue;
     }
-    std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, scenes.size(), scene.c_str());
-    exit_code = std::max(exit_code, render_one(scene.string(), options, overrides, progress));
-    render_panes_alone(scene.string(), options.video_path, overrides, progress);
-    ++rendered;
+    chosen.push_back(i);
   }
-  std::fprintf(stderr, "rendered %d of %zu scenes into %s/\n", rendered, scenes.size(), out_directory.c_str());
+  int exit_code = 0;
+  if (choice.jobs > 1 && chosen.size() > 1) {
+    std::vector<std::vector<std::string>> jobs;
+    for (size_t i : chosen) {
+      jobs.push_back(choice.child_arguments);
+      jobs.back().insert(jobs.back().end(), {"--only", scenes[i].filename().string()});
+    }
+    std::vector<std::chrono::steady_clock::time_point> starts(jobs.size());
+    auto line = [&](size_t job) { return "[" + std::to_string(chosen[job] + 1) + "/" + std::to_string(scenes.size()) + "] " + scenes[chosen[job]].string(); };
+    exit_code = demos::run_child_jobs(
+        jobs, choice.jobs,
+        [&](size_t job) {
+          starts[job] = std::chrono::steady_clock::now();
+          std::fprintf(stderr, "%s: started\n", line(job).c_str());
+        },
+        [&](size_t job, int code) {
+          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - starts[job]).count();
+          if (code == 0) std::fprintf(stderr, "%s: done in %.1f s\n", line(job).c_str(), seconds);
+          else std::fprintf(stderr, "%s: failed (exit %d) after %.1f s\n", line(job).c_str(), code, seconds);
+        });
+  } else {
+    for (size_t i : chosen) {
+      const fs::path& scene = scenes[i];
+      demos::RenderOptions options;
+      options.video_path = default_video_path(scene.string(), out_directory);
+      options.poster_path = demos::poster_path(options.video_path);
+      if (choice.only.empty()) std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, scenes.size(), scene.c_str());
+      exit_code = std::max(exit_code, render_one(scene.string(), options, overrides, progress));
+      render_panes_alone(scene.string(), options.video_path, overrides, progress);
+    }
+  }
+  if (!choice.only.empty()) return exit_code;  // one job of --jobs: its parent writes the gallery
+  std::fprintf(stderr, "rendered %zu of %zu scenes into %s/\n", chosen.size(), scenes.size(), out_directory.c_str());
   const int videos = demos::write_gallery(scenes_directory, out_directory);
   std::fprintf(stderr, "wrote %s/index.html (%d videos)\n", out_directory.c_str(), videos);
   return exit_code;
@@ -390,7 +441,8 @@ int main(int argc, char** argv) {
                                 "  impulse catalogue -o out\n"
                                 "  impulse catalogue --scenes my_course/ -o videos/ --quality low\n"
                                 "  impulse catalogue --shard 2/4 -o out     # the second of four CI jobs\n"
-                                "  impulse catalogue --changed-only -o out  # only scenes edited since their video\n") +
+                                "  impulse catalogue --changed-only -o out  # only scenes edited since their video\n"
+                                "  impulse catalogue --jobs 2 -o out        # two scenes at once\n") +
                     kExitCodes);
   std::string scenes_directory = "assets/scenes", out_directory = "out";
   VideoOverrides catalogue_overrides;
@@ -400,6 +452,9 @@ int main(int argc, char** argv) {
   std::string shard;
   catalogue->add_option("--shard", shard, "K/N: render only every Nth scene in name order, from the Kth (CI jobs in parallel)")
       ->type_name("K/N");
+  catalogue->add_option("--jobs", catalogue_choice.jobs, "Scenes rendered at once, each in a process of its own (default 1)")
+      ->check(CLI::Range(1, 16));
+  catalogue->add_option("--only", catalogue_choice.only, "")->group("");  // one job of --jobs
   catalogue->add_flag("--changed-only", catalogue_choice.changed_only,
                       "Skip a scene whose video is newer than its scene file and the program (not after --set or --quality changes)");
   add_video_options(catalogue, catalogue_overrides);
@@ -496,6 +551,7 @@ int main(int argc, char** argv) {
             catalogue_choice.shard < 1 || catalogue_choice.shard > catalogue_choice.shards)
           throw std::invalid_argument("--shard wants K/N with 1 <= K <= N (like 2/4), got '" + shard + "'");
       }
+      catalogue_choice.child_arguments = job_arguments(argc, argv);
       return render_catalogue(scenes_directory, out_directory, progress, catalogue_overrides, catalogue_choice);
     }
     if (*verify) {

@@ -191,5 +191,39 @@ TEST_F(OutputFaults, AnInterruptedCatalogueKeepsTheVideosItFinished) {
   expect_no_temporaries();
 }
 
+// Processes whose command line names `text`: the jobs a catalogue started, if any are left.
+int processes_naming(const std::string& text) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    std::ifstream file(entry.path() / "cmdline", std::ios::binary);
+    std::string line((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if (line.find(text) != std::string::npos && entry.path().filename() != std::to_string(getpid())) ++count;
+  }
+  return count;
+}
+
+// --jobs 2: two scenes render at once, each in a child process; SIGTERM to the catalogue reaches
+// both, and neither leaves its .part file or runs on.
+TEST_F(OutputFaults, AnInterruptedCatalogueOfJobsStopsEveryJob) {
+  const fs::path scenes = work_ / "job_scenes";
+  fs::create_directory(scenes);
+  for (const char* name : {"a.toml", "b.toml", "c.toml"})
+    fs::copy_file(fs::path(IMPULSE_SOURCE_DIR) / "assets/scenes/bounce.toml", scenes / name);
+  const fs::path out = work_ / "job_out";
+  testing::ChildProcess child({IMPULSE_PROGRAM, "catalogue", "--scenes", scenes.string(), "-o", out.string(),
+                               "--quality", "low", "--jobs", "2"},
+                              with_source({}));
+  ASSERT_TRUE(wait_for_bytes(out / "a.mp4.part"));
+  ASSERT_TRUE(wait_for_bytes(out / "b.mp4.part"));
+  EXPECT_EQ(processes_naming(out.string()), 3) << "the catalogue and its two jobs";
+  kill(child.pid(), SIGTERM);
+  const testing::ChildResult result = child.wait();
+  EXPECT_EQ(result.signal, SIGTERM) << result.describe();
+  EXPECT_NE(result.stderr_text.find("[1/3] " + (scenes / "a.toml").string() + ": started"), std::string::npos) << result.stderr_text;
+  EXPECT_EQ(processes_naming(out.string()), 0);
+  EXPECT_FALSE(fs::exists(out / "c.mp4.part"));
+  expect_no_temporaries();
+}
+
 }  // namespace
 }  // namespace impulse

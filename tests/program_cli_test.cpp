@@ -358,6 +358,30 @@ std::string contents(const fs::path& path) {
   return text.str();
 }
 
+// --jobs 2 renders every scene once, each in a child process of its own, the same bytes as one at
+// a time, and writes one gallery.
+TEST(Catalogue, JobsRenderEverySceneOnceAsOneAtATimeWould) {
+  const fs::path dir = work_directory();
+  fs::create_directories(dir / "scenes");
+  const std::string small = std::string(kSlide) + "[video]\nwidth = 160\nheight = 120\nfps = 10\n";
+  for (const char* name : {"a.toml", "b.toml", "c.toml"}) std::ofstream(dir / "scenes" / name) << small;
+  const std::string scenes = (dir / "scenes").string();
+  const testing::ChildResult jobs = impulse({"catalogue", "--scenes", scenes, "-o", (dir / "jobs").string(), "--jobs", "2"});
+  ASSERT_TRUE(jobs.succeeded()) << jobs.describe();
+  const testing::ChildResult alone = impulse({"-q", "catalogue", "--scenes", scenes, "-o", (dir / "alone").string()});
+  ASSERT_TRUE(alone.succeeded()) << alone.describe();
+  for (const char* name : {"a", "b", "c"}) {
+    EXPECT_NE(jobs.stderr_text.find(std::string(name) + ".toml: done in"), std::string::npos) << jobs.stderr_text;
+    const std::string video = std::string(name) + ".mp4";
+    EXPECT_GT(fs::file_size(dir / "jobs" / video), 1000u);
+    EXPECT_EQ(contents(dir / "jobs" / video), contents(dir / "alone" / video)) << video;
+  }
+  EXPECT_NE(jobs.stderr_text.find("rendered 3 of 3 scenes"), std::string::npos) << jobs.stderr_text;
+  EXPECT_TRUE(fs::exists(dir / "jobs" / "index.html"));
+  EXPECT_EQ(impulse({"catalogue", "--scenes", scenes, "-o", (dir / "jobs").string(), "--jobs", "0"}).exit_code, 1);
+}
+
+
 // The same scene gives the same trace with the solver on one thread or two, and the same MP4
 // bytes run after run.
 TEST(Determinism, TracesWhateverTheThreadsAndVideosRunToRun) {
