@@ -54,7 +54,7 @@ TEST(WorkshopMethod, PenetrationHackAddsImpulse) {
   EXPECT_NEAR(world.bodies()[ball].velocity.y(), 0.075, 1e-9);
 }
 
-// Eq. 8 as printed, -(1 - e) (the erratum the workshop scene s3_erratum runs): at e = 1 a head-on
+// Eq. 8 as printed, -(1 - e) (the erratum the scene s3_restitution_erratum runs): at e = 1 a head-on
 // hit gets no impulse but the hack fix's, where -(1 + e) gives 2 m v / (1 + m_a/m_b); at e = 0.7
 // it gives 0.3 of the approach's impulse instead of 1.7.
 TEST(WorkshopMethod, PrintedSignGivesTooLittleImpulse) {
