@@ -305,6 +305,16 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
   }
   int exit_code = 0;
   if (choice.jobs > 1 && chosen.size() > 1) {
+    // The longest first, so that the last to end does not start last: an estimate of each scene's
+    // work from its length, bodies and panes (its own and rendered alone).
+    std::vector<double> work(scenes.size(), 0.0);
+    for (size_t i : chosen) try {
+        const demos::Scene scene = demos::load_scene(scenes[i].string(), overrides.settings);
+        work[i] = scene.duration * (1 + scene.bodies.size() / 100.0) * std::max<size_t>(1, 2 * scene.compare.values.size());
+      } catch (const std::exception&) {
+        // its job reports what is wrong with it
+      }
+    std::stable_sort(chosen.begin(), chosen.end(), [&](size_t a, size_t b) { return work[a] > work[b]; });
     std::vector<std::vector<std::string>> jobs;
     for (size_t i : chosen) {
       jobs.push_back(choice.child_arguments);
