@@ -328,10 +328,12 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
           starts[job] = std::chrono::steady_clock::now();
           std::fprintf(stderr, "%s: started\n", line(job).c_str());
         },
-        [&](size_t job, int code) {
-          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - starts[job]).count();
-          if (code == 0) std::fprintf(stderr, "%s: done in %.1f s\n", line(job).c_str(), seconds);
-          else std::fprintf(stderr, "%s: failed (exit %d) after %.1f s\n", line(job).c_str(), code, seconds);
+        [&, finished = size_t(0), began = std::chrono::steady_clock::now()](size_t job, int code) mutable {
+          const auto now = std::chrono::steady_clock::now();
+          const double seconds = std::chrono::duration<double>(now - starts[job]).count();
+          const std::string outcome = code == 0 ? "done" : "failed (exit " + std::to_string(code) + ")";
+          std::fprintf(stderr, "%s: %s in %.1f s; %zu of %zu scenes finished, %.0f s so far\n", line(job).c_str(), outcome.c_str(),
+                       seconds, ++finished, jobs.size(), std::chrono::duration<double>(now - began).count());
         });
   } else {
     for (size_t i : chosen) {
