@@ -1,0 +1,79 @@
+// What the `impulse` commands share: their exit codes, what the command line changes in every
+// scene it reads, and rendering a scene or a comparison with a progress bar, its checks reported.
+#pragma once
+#include "demos/film/render_scene.h"
+#include "demos/scene/scene_compare.h"
+#include "demos/scene/scene_file.h"
+#include "demos/scene/video_quality.h"
+
+#include <exception>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace impulse::demos {
+
+// Exit codes, as README.md lists them. An interrupted run ends by its signal (130, 143 in a shell).
+inline constexpr int kExitBadInput = 1;  // the scene file or the command line is wrong; nothing was written
+inline constexpr int kExitCheckFailed = 2;  // a [[check]] of the scene did not hold (the outputs are written)
+inline constexpr int kExitOutput = 3;    // the output cannot be written; nothing was replaced, no temporary left
+inline constexpr int kExitFailure = 4;   // anything else went wrong (the renderer, the encoder)
+
+// What the command line changes in every scene it reads.
+struct VideoOverrides {
+  std::vector<std::string> settings;  // --set KEY=VALUE, over the scene file
+  std::string quality;  // empty: the scene's
+  std::optional<int> width, height, fps, crf;
+  std::string x264_preset;  // empty: the scene's
+  int samples = 4;
+  std::string spheres = "impostor";
+  std::string shadows = "ground";
+
+  void apply(demos::Scene& scene, demos::RenderOptions& options) const {
+    demos::VideoSetting& video = scene.video;
+    if (!quality.empty()) {
+      const std::string scene_preset = video.preset;  // size, rate and CRF come with the quality, not the encoder speed
+      video = *demos::quality_preset(quality);
+      video.preset = scene_preset;
+    }
+    if (width) video.width = *width;
+    if (height) video.height = *height;
+    if (fps) video.fps = *fps;
+    if (crf) video.crf = *crf;
+    if (!x264_preset.empty()) video.preset = x264_preset;
+    if (video.width % 2 || video.height % 2)
+      throw std::invalid_argument("--width and --height must be even (H.264 yuv420p halves the colour planes)");
+    options.renderer.samples = samples;
+    options.renderer.spheres = spheres == "tessellated" ? render::SphereMethod::tessellated : render::SphereMethod::impostor;
+    options.renderer.shadows = shadows == "map"    ? render::ShadowMethod::shadow_map
+                               : shadows == "none" ? render::ShadowMethod::none
+                                                   : render::ShadowMethod::ground;
+  }
+};
+
+// The scene with the --set settings over it; what is odd but allowed is said on stderr.
+Scene load(const std::string& scene_path, const std::vector<std::string>& settings);
+
+// Prints each [[check]]'s result on stderr; the exit code: 0, or kExitCheckFailed if one failed.
+int report_checks(const std::string& scene_path, const std::vector<CheckResult>& results);
+
+// Says what went wrong and returns the exit code for it.
+int report(const std::exception& error);
+
+std::string default_video_path(const std::string& scene_path, const std::string& out_directory);  // DIR/NAME.mp4
+std::string default_comparison_path(const std::vector<std::string>& scene_paths, const std::string& vary);
+
+// One scene (a comparison if its file has a [compare] table) into options.video_path; the exit code.
+int render_one(const std::string& scene_path, RenderOptions options, const VideoOverrides& overrides, bool progress);
+
+// Panes side by side: one per value of `vary` (or of the scene's [compare]), or one per scene file.
+int render_comparison(const std::vector<std::string>& scene_paths, const std::string& vary, RenderOptions options,
+                      const VideoOverrides& overrides, bool progress);
+
+// Each pane of a comparison scene alone, beside the comparison (the gallery links them); their
+// checks were reported with the comparison. Nothing for a scene that is no comparison.
+void render_panes_alone(const std::string& scene_path, const std::string& video_path, const VideoOverrides& overrides,
+                        bool progress);
+
+}  // namespace impulse::demos
