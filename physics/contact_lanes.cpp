@@ -120,6 +120,37 @@ bool ContactSolver::solve_manifolds(int index, int width, std::vector<BodyState>
   return bounced;
 }
 
+// Rolling resistance, in the relax pass, for a sphere's one point: an angular impulse about the
+// tangents against the bodies' relative turning, within the disc of radius c R N (a torque c R N
+// over the sub-step: the rolling resistance coefficient c, as a rolling ball on a floor that gives
+// a little meets, and so slows at c g / (1 + I / (m R^2))). Solved afresh each pass, not warm
+// started: few manifolds have it, and each pass is one sub-step's worth.
+void ContactSolver::resist_rolling(const ManifoldLanes& block, Mask2 solved, Real2 normal_sum, BodyState* const sa[2],
+                                   BodyState* const sb[2], V3& wa, V3& wb) const {
+  for (int l = 0; l < 2; ++l) {
+    if (!solved[l] || block.rolling_radius[l] <= 0) continue;
+    const Mat3& inv_a = sa[l]->inv_inertia;
+    const Mat3& inv_b = sb[l]->inv_inertia;
+    const Vec3 t1 = lane(block.tangent1, l), t2 = lane(block.tangent2, l);
+    Vec3 w_a = lane(wa, l), w_b = lane(wb, l);
+    const Vec3 turning = w_a - w_b;
+    Real j1 = -turning.dot(t1) * safe_inverse(t1.dot((inv_a + inv_b) * t1));
+    Real j2 = -turning.dot(t2) * safe_inverse(t2.dot((inv_a + inv_b) * t2));
+    const Real limit = block.rolling_radius[l] * normal_sum[l];
+    const Real length_squared = j1 * j1 + j2 * j2;
+    if (length_squared > limit * limit) {
+      const Real scale = limit / std::sqrt(length_squared);
+      j1 *= scale;
+      j2 *= scale;
+    }
+    const Vec3 impulse = j1 * t1 + j2 * t2;
+    if (sa[l]->inv_mass != 0) w_a += inv_a * impulse;
+    if (sb[l]->inv_mass != 0) w_b -= inv_b * impulse;
+    set_lane(wa, l, w_a);
+    set_lane(wb, l, w_b);
+  }
+}
+
 // The lanes `solved` of a block of manifolds with N points each, which move no body in common.
 //
 // Normal rows: accumulated and clamped to push only; the target is "stop approaching" (restitution
@@ -238,6 +269,10 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<
     wa = wa + (applied1 * block.turn_a1 + applied2 * block.turn_a2 + applied_twist * block.twist_a);
     vb = vb - inv_mass_b * linear_friction;
     wb = wb - (applied1 * block.turn_b1 + applied2 * block.turn_b2 + applied_twist * block.twist_b);
+  }
+
+  if constexpr (!UseBias) {
+    if (any(block.rolling_radius > 0)) resist_rolling(block, solved, normal_sum, sa, sb, wa, wb);
   }
 
   // Only the solved lanes: the other bounced, or is empty.

@@ -271,6 +271,7 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, ManifoldLanes& block
     const Real k = curvature(body_a) + curvature(body_b);
     const Real depth = std::max(-(first.adjusted_separation + (first.anchor_a - first.anchor_b).dot(first.normal)), Real(0));
     if (k > 0) twist_radius = Real(2) / 3 * std::sqrt(2 * depth / k);
+    if (k > 0) block.rolling_radius[l] = settings_.rolling_resistance / k;
   }
   block.twist_radius[l] = twist_radius;
   // A sphere's surface stays where it is as it turns, and a still body does not turn.

@@ -28,6 +28,9 @@ struct ContactSolverSettings {
   Real max_push_velocity = 3;          // m/s, fastest the correction moves bodies apart
   Real restitution_threshold = 0.5;    // m/s, slower hits do not bounce (no resting jiggle)
   bool friction = true;                // tangential impulses on or off (exercise 1)
+  Real rolling_resistance = 0;         // c: a sphere's contact resists rolling with a torque up to
+                                       // c R N (R its radius, N the normal force); 0: a rigid ball
+                                       // on a rigid plane rolls on for ever
 };
 
 // Contacts stiffer than this fraction of the sub-step rate are not stable. Box2D's rule is 1/4; at
@@ -104,6 +107,7 @@ struct alignas(64) ManifoldLanes {
   Real2 coupling[4][4];            // d(normal velocity at i) / d(impulse at j), for the points
   Real2 tangent_mass1, tangent_mass2, twist_mass;
   Real2 twist_radius;              // mean distance of the points from their centroid
+  Real2 rolling_radius;            // rolling resistance times the spheres' radius, else 0
   // The friction rows' angular parts, fixed for the step: r x t at the points' centroid, and how
   // an impulse along t1, t2 or a twist about n turns each body (I^-1 (r x t), I^-1 n).
   V3 ra_cross_t1, ra_cross_t2, rb_cross_t1, rb_cross_t2;
@@ -174,6 +178,8 @@ class ContactSolver {
   template <int N, bool Backwards, bool UseBias>
   void solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<BodyState>& states, Real inv_h);
   void copy_back(int step);
+  void resist_rolling(const ManifoldLanes& block, Mask2 solved, Real2 normal_sum, BodyState* const sa[2], BodyState* const sb[2],
+                      V3& wa, V3& wb) const;
   void shift_bounce(int index, std::vector<BodyState>& states);
   void add_to_totals(int index);
   bool bounce(int step, BodyState& sa, BodyState& sb, Real h);

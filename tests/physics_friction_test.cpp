@@ -92,6 +92,24 @@ TEST(Friction, SpinningBallSetDownEndsUpRollingAtTwoSeventhsOfRadiusTimesSpin) {
   EXPECT_LT(b.velocity.x(), 0) << "the contact point moves +x, so friction drives the ball -x";
 }
 
+// Rolling resistance c: a torque up to c R N against rolling, so a ball rolling on the ground
+// slows at c g / (1 + I / (m R^2)) = 5/7 c g (a solid ball), and without it rolls on.
+TEST(Friction, RollingResistanceSlowsARollingBallAtFiveSeventhsOfCG) {
+  for (const Real c : {0.0, 0.02}) {
+    WorldSettings settings;
+    settings.sleep.enabled = false;
+    settings.contact.rolling_resistance = c;
+    World world(settings);
+    add_ground(world, 0, 0.5);
+    const Real radius = 0.4, speed = 1;
+    const int ball = add_sphere(world, Vec3(0, radius, 0), radius, 1.0, Vec3(speed, 0, 0), {0, 0.5});
+    world.body(ball).angular_velocity = Vec3(0, 0, -speed / radius);
+    for (int i = 0; i < 120; ++i) world.step();
+    const Real expected = speed - 5.0 / 7.0 * c * 9.81 * 2.0;
+    EXPECT_NEAR(world.bodies()[ball].velocity.x(), expected, 0.002) << "c = " << c;
+  }
+}
+
 TEST(Friction, SwitchedOffABoxSlidingOnTheGroundKeepsItsSpeed) {
   WorldSettings settings;
   settings.contact.friction = false;

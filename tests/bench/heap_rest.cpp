@@ -5,6 +5,8 @@
 //
 //   heap_rest [boxes|spheres|both] [mu,...] [e,...] [seconds]
 //   heap_rest both 0.4,0.5,0.6 0,0.5 60      (the default: the twelve configurations)
+// ROLL=c in the environment sets WorldSettings::contact.rolling_resistance; TRACE=1 prints the
+// fastest body's contacts over the last 2 s.
 #include "tests/bench_world.h"
 
 #include <algorithm>
@@ -71,6 +73,7 @@ int main(int argc, char** argv) {
         WorldSettings settings;
         settings.sleep.enabled = false;
         settings.threads = 1;
+        if (const char* roll = std::getenv("ROLL")) settings.contact.rolling_resistance = std::strtod(roll, nullptr);
         World world = test::bench_world(heap, settings, {e, mu});
         Real at[3] = {0, 0, 0}, late = 0;
         int above = 0;
