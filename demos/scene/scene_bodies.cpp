@@ -98,6 +98,7 @@ void read_world(TableReader& top, Scene& scene) {
   }
   w.contact.friction = r.boolean("friction", w.contact.friction);
   w.contact.restitution_threshold = r.number("restitution_threshold", w.contact.restitution_threshold, 0);
+  w.contact.rolling_resistance = r.number("rolling_resistance", w.contact.rolling_resistance, 0, 1);
   w.contact.contact_hertz = r.number("contact_hertz", w.contact.contact_hertz, 0, 10000, true);
   w.sleep.enabled = r.boolean("sleeping", w.sleep.enabled);
   w.threads = r.integer("threads", w.threads, 0, 2);  // 0: one per core, at most 2; the results do not depend on it
