@@ -1,4 +1,4 @@
-// heap_rest: exercise 4 on the heaps of ../shared/bench/SCENES.md with sleeping off (issue 17).
+// heap_rest: exercise 4 on the heaps of ../shared/bench/SCENES.md with sleeping off: do they come to rest?
 // For each heap, friction and restitution asked for, it runs 60 s on one thread and prints the
 // fastest body (|v| + |w| r, r its bounding radius: its fastest point) at 20, 40 and 60 s, the
 // fastest from 20 s to 60 s, and how many bodies are above 1 mm/s at 60 s.
