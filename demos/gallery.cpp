@@ -58,7 +58,7 @@ std::string settings_of(const Scene& scene) {
   const physics::WorldSettings& world = scene.world;
   std::string text = "method " + std::string(physics::method_name(world.method)) + ", friction " +
                      (world.contact.friction ? "on" : "off") + ", " + number(std::round(1 / world.time_step)) +
-                     " steps/s, gravity " + number(-world.gravity.y()) + " m/s², " +
+                     " steps/s, gravity " + number(world.gravity.norm()) + " m/s², " +
                      std::to_string(scene.bodies.size()) + " bodies, " + number(scene.duration) + " s simulated";
   return text;
 }
