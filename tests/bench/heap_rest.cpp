@@ -5,8 +5,10 @@
 //
 //   heap_rest [boxes|spheres|both] [mu,...] [e,...] [seconds]
 //   heap_rest both 0.4,0.5,0.6 0,0.5 60      (the default: the twelve configurations)
-// ROLL=c in the environment sets WorldSettings::contact.rolling_resistance; TRACE=1 prints the
-// fastest body's contacts over the last 2 s.
+// The environment sets the world: ROLL=c contact.rolling_resistance, DAMP=z its damping ratio,
+// HERTZ=f its stiffness, SUBSTEPS=n that many sub-steps always. TRACE=1 prints the fastest body's
+// contacts over the last 2 s; MONITOR=1 the fastest body, the count above 1 mm/s and the sub-steps
+// each second from 20 s.
 #include "tests/bench_world.h"
 
 #include <algorithm>
@@ -74,6 +76,12 @@ int main(int argc, char** argv) {
         settings.sleep.enabled = false;
         settings.threads = 1;
         if (const char* roll = std::getenv("ROLL")) settings.contact.rolling_resistance = std::strtod(roll, nullptr);
+        if (const char* damp = std::getenv("DAMP")) settings.contact.contact_damping_ratio = std::strtod(damp, nullptr);
+        if (const char* sub = std::getenv("SUBSTEPS")) {
+          settings.substeps = std::atoi(sub);
+          settings.stack_sink = 0;
+        }
+        if (const char* hertz = std::getenv("HERTZ")) settings.contact.contact_hertz = std::strtod(hertz, nullptr);
         World world = test::bench_world(heap, settings, {e, mu});
         Real at[3] = {0, 0, 0}, late = 0;
         int above = 0;
@@ -81,13 +89,19 @@ int main(int argc, char** argv) {
           world.step();
           if (step < 20 * 60) continue;
           Real fastest = 0;
-          int count = 0;
+          int count = 0, fastest_body = -1;
           for (const Body& body : world.bodies()) {
             if (body.is_static()) continue;
             const Real speed = point_speed(body);
-            fastest = std::max(fastest, speed);
+            if (speed > fastest) {
+              fastest = speed;
+              fastest_body = int(&body - world.bodies().data());
+            }
             count += speed > 1e-3;
           }
+          if (std::getenv("MONITOR") && step % 60 == 0)
+            std::printf("  %3d s: fastest %7.3f mm/s (body %d at y %.2f), %d above 1 mm/s, %d sub-steps\n", step / 60, 1e3 * fastest, fastest_body,
+                        fastest_body < 0 ? 0.0 : world.bodies()[fastest_body].position.y(), count, world.substeps());
           late = std::max(late, fastest);
           if (step % (20 * 60) == 0 && step / (20 * 60) <= 3) at[step / (20 * 60) - 1] = fastest;
           above = count;
