@@ -279,10 +279,10 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, ManifoldLanes& block
   block.turns_b[l] = sb.inv_mass > 0 && body_b.shape.type != ShapeType::sphere;
 }
 
-// Last step's friction impulses.
+// Last step's friction impulses, on this step's tangents.
 void ContactSolver::warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous) {
-  m.tangent_impulse1 = previous.tangent_impulse1;
-  m.tangent_impulse2 = previous.tangent_impulse2;
+  m.tangent_impulse1 = previous.friction_impulse.dot(m.tangent1);
+  m.tangent_impulse2 = previous.friction_impulse.dot(m.tangent2);
   m.twist_impulse = previous.twist_impulse;
 }
 
@@ -439,7 +439,7 @@ void ContactSolver::store_impulses() {
   schedule_.for_each_step(*team_, [&](int index) {
     copy_back(index);
     const ManifoldConstraint& m = manifolds_[index];
-    warm_manifolds_[index] = {m.first, m.count, m.tangent_impulse1, m.tangent_impulse2, m.twist_impulse};
+    warm_manifolds_[index] = {m.first, m.count, m.tangent_impulse1 * m.tangent1 + m.tangent_impulse2 * m.tangent2, m.twist_impulse};
     for (int i = 0; i < m.count; ++i) warm_points_[m.first + i] = {constraints_[m.first + i].feature, constraints_[m.first + i].normal_impulse};
     ManifoldLoad& load = loads_[index];
     load = {m.a, m.b, 0, 0, constraints_[m.first].normal};

@@ -209,7 +209,10 @@ class ContactSolver {
   };
   struct ManifoldWarm {
     int first = 0, count = 0;
-    Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;
+    // Friction as a world vector: the tangents are rebuilt from each step's normal, and the basis
+    // (tangent_basis) turns over where the normal's z changes sign.
+    Vec3 friction_impulse = Vec3::Zero();
+    Real twist_impulse = 0;
   };
   std::vector<PointWarm> warm_points_, previous_warm_points_;
   std::vector<ManifoldWarm> warm_manifolds_, previous_warm_manifolds_;
