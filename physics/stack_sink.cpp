@@ -19,8 +19,7 @@ Real StackSink::deepest_give(const ContactSolver& solver, const std::vector<Body
     const int upper = body_of_slot[a_above ? load.a : load.b], lower = body_of_slot[a_above ? load.b : load.a];
     const Real give = load.impulse / h / load.normal_mass;
     if (bodies[lower].is_static()) {
-      // Twice as stiff as between two moving bodies (staticSoftness): a quarter the give.
-      give_below_[upper] = std::max(give_below_[upper], give / 4);
+      give_below_[upper] = std::max(give_below_[upper], give);
     } else if (!bodies[lower].awake) {
       // Asleep, the solver holds it as still; awake again, the chain under it gives as it did
       // when it fell asleep. Counted so, a pile does not lose sub-steps as it falls asleep.

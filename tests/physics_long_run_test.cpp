@@ -61,17 +61,28 @@ TEST(Heap, SpheresComeToRestWithSleepingOff) {
   EXPECT_LT(fastest, 0.001) << "m/s";
 }
 
-// A 100 kg box on a 1 kg box on the ground: the light one is not squeezed out or through.
-TEST(Extreme, HundredToOneMassStackStands) {
-  World world(WorldSettings{});
+// A 100 kg box on a 1 kg box on the ground, sleeping off: the light one is not squeezed out or
+// through, and the stack comes to rest (with the ground's contacts twice as stiff as the others,
+// it rattled at 0.1-0.3 m/s for ever and wandered by centimetres).
+TEST(Extreme, HundredToOneMassStackStandsStill) {
+  WorldSettings settings;
+  settings.sleep.enabled = false;
+  World world(settings);
   add_ground_box(world);
   const int light = add_box(world, Vec3(0, 0.5, 0), Vec3::Constant(0.5), 1.0);
   const int heavy = add_box(world, Vec3(0, 1.5, 0), Vec3::Constant(0.5), 100.0);
-  for (int step = 0; step < 10 * 60; ++step) world.step();
+  Real fastest = 0;
+  for (int step = 1; step <= 10 * 60; ++step) {
+    world.step();
+    if (step < 5 * 60) continue;
+    for (int box : {light, heavy})
+      fastest = std::max(fastest, world.bodies()[box].velocity.norm() + world.bodies()[box].angular_velocity.norm() * std::sqrt(0.75));
+  }
   const auto& bodies = world.bodies();
   EXPECT_NEAR(bodies[light].position.y(), 0.5, 0.01);
   EXPECT_NEAR(bodies[heavy].position.y(), 1.5, 0.02);
-  EXPECT_LT(std::abs(bodies[heavy].position.x()), 0.01);
+  EXPECT_LT(Vec3(bodies[heavy].position.x(), 0, bodies[heavy].position.z()).norm(), 0.001) << "m from the axis";
+  EXPECT_LT(fastest, 0.001) << "m/s, from 5 s to 10 s";
 }
 
 // A 10 cm sphere at 100 m/s (1.7 m a step at 60 Hz) against a static wall 5 cm thick: the
