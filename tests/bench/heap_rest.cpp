@@ -7,7 +7,7 @@
 //   heap_rest both 0.4,0.5,0.6 0,0.5 60      (the default: the twelve configurations)
 // The environment sets the world: ROLL=c contact.rolling_resistance, DAMP=z its damping ratio,
 // HERTZ=f its stiffness, SUBSTEPS=n that many sub-steps always. TRACE=1 prints the fastest body's
-// contacts over the last 2 s; MONITOR=1 the fastest body, the count above 1 mm/s and the sub-steps
+// contact points each step over the last 2 s (FOLLOW=i: body i's instead); MONITOR=1 the fastest body, the count above 1 mm/s and the sub-steps
 // each second from 20 s.
 #include "tests/bench_world.h"
 
@@ -31,30 +31,24 @@ std::vector<Real> numbers(const std::string& text) {
 
 Real point_speed(const Body& body) { return body.velocity.norm() + body.angular_velocity.norm() * bounding_radius(body.shape); }
 
-// The fastest body from the first traced step on: its speed and, per body it touches, the number
-// of points, their normal impulse and how much of mu N friction uses.
+// The fastest body from the first traced step on (or FOLLOW's): its speed, height and kinetic
+// energy, and each of its contact points: the other body, penetration, normal impulse and how
+// much of mu N friction uses.
 void trace(World& world, int step, Real mu) {
-  static int body = -1;
+  static int body = std::getenv("FOLLOW") ? std::atoi(std::getenv("FOLLOW")) : -1;
   if (body < 0) {
     Real fastest = 0;
     for (int i = 0; i < int(world.bodies().size()); ++i)
       if (!world.bodies()[i].is_static() && point_speed(world.bodies()[i]) > fastest) fastest = point_speed(world.bodies()[body = i]);
   }
-  if (step % 2) return;
   const Body& b = world.bodies()[body];
-  std::printf("%d body %d v %.4f w %.4f y %.3f |", step, body, b.velocity.norm(), b.angular_velocity.norm(), b.position.y());
-  struct Pair { int other, points; Real n; Vec3 t; Vec3 normal; };
-  std::vector<Pair> pairs;
+  const Real energy = b.velocity.squaredNorm() / (2 * b.inv_mass) + b.angular_velocity.dot(b.inv_inertia_world.inverse() * b.angular_velocity) / 2;
+  std::printf("%d body %d v %.4f w %.4f y %.5f KE %.2e |", step, body, b.velocity.norm(), b.angular_velocity.norm(), b.position.y(), energy);
   for (const ContactRecord& c : world.record().contacts) {
     if (c.body_a != body && c.body_b != body) continue;
-    const int other = c.body_a == body ? c.body_b : c.body_a;
-    auto it = std::find_if(pairs.begin(), pairs.end(), [&](const Pair& p) { return p.other == other; });
-    if (it == pairs.end()) { pairs.push_back({other, 0, 0, Vec3::Zero(), c.normal}); it = pairs.end() - 1; }
-    it->points++;
-    it->n += c.normal_impulse;
-    it->t += c.tangent_impulse;
+    std::printf(" %d:%.2fmm/%.3f/%.2f", c.body_a == body ? c.body_b : c.body_a, 1e3 * c.penetration, c.normal_impulse,
+                c.normal_impulse > 0 ? c.tangent_impulse.norm() / (mu * c.normal_impulse) : 0.0);
   }
-  for (const Pair& p : pairs) std::printf(" %d:%d n=%.4f f/muN=%.2f ny=%.2f", p.other, p.points, p.n, p.n > 0 ? p.t.norm() / (mu * p.n) : 0.0, p.normal.y());
   std::printf("\n");
 }
 
