@@ -116,8 +116,8 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
                             const Vec3& gravity, Real h) {
   settings_ = settings;
   const Real hertz = std::min(settings.contact_hertz, kMaxHertzPerSubstepRate / h);
-  // One stiffness for every contact. Box2D makes contacts with static bodies twice as stiff; here
-  // a 1 kg box between the ground and a 100 kg box then rattled at 0.1-0.3 m/s for ever: its
+  // One stiffness for every contact. Box2D makes contacts with static bodies twice as stiff; so
+  // made, a 1 kg box between the ground and a 100 kg box rattles at 0.1-0.3 m/s for ever: its
   // contact with the ground, four times as stiff, and the one above it give it a mode at about
   // 2.2 times the contacts' frequency, beyond what a sub-step at 1/6 of its rate holds.
   const Softness softness = make_softness(hertz, settings.contact_damping_ratio, h);

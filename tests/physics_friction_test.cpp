@@ -56,9 +56,9 @@ TEST(Friction, BoxStaysOnASlopeWhenTanThetaIsBelowMu) {
 
 // Three flat boxes stacked on the slope, well inside the friction cone (tan 30 = 0.58 of mu = 1)
 // and from tipping (tan 30 < 0.5 m / 0.6 m), sleeping off: once settled nothing moves. The slope's
-// normal has z = 0, where the friction directions built from it turn over with z's sign; a warm
-// start carried over in the wrong directions kicked the stack every few steps, and it fluttered
-// at 7 Hz and walked down the slope (1.3 mm/s, 4 mm in 15 s).
+// normal has z = 0, where the friction directions built from it turn over with z's sign: a warm
+// start carried over as two numbers, not as a vector, kicks the stack every few steps, and it
+// flutters at 7 Hz and walks down the slope (1.3 mm/s, 4 mm in 15 s).
 TEST(Friction, StackOnASlopeInsideTheFrictionConeStaysStill) {
   WorldSettings settings;
   settings.sleep.enabled = false;

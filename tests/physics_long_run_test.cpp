@@ -62,8 +62,8 @@ TEST(Heap, SpheresComeToRestWithSleepingOff) {
 }
 
 // A 100 kg box on a 1 kg box on the ground, sleeping off: the light one is not squeezed out or
-// through, and the stack comes to rest (with the ground's contacts twice as stiff as the others,
-// it rattled at 0.1-0.3 m/s for ever and wandered by centimetres).
+// through, and the stack comes to rest (were the ground's contacts twice as stiff as the others,
+// it would rattle at 0.1-0.3 m/s for ever and wander by centimetres).
 TEST(Extreme, HundredToOneMassStackStandsStill) {
   WorldSettings settings;
   settings.sleep.enabled = false;
