@@ -206,10 +206,10 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, std::vector<
     // lose the speed it hits with.
     const Mask2 apart = separation > 0;
     if constexpr (UseBias) {
-      const Real2 soft_bias = block.bias_rate * separation;
+      const Real2 soft_bias = splat(softness_.bias_rate) * separation;
       const Real2 bias = select(apart, separation * inv_h, select(soft_bias < max_push, max_push, soft_bias));
-      mass[i] = select(apart, p.normal_mass, p.normal_mass * block.mass_scale);
-      rhs[i] = impulse[i] - mass[i] * bias - select(apart, splat(0), block.impulse_scale) * impulse[i];
+      mass[i] = select(apart, p.normal_mass, p.normal_mass * splat(softness_.mass_scale));
+      rhs[i] = impulse[i] - mass[i] * bias - select(apart, splat(0), splat(softness_.impulse_scale)) * impulse[i];
     } else {
       mass[i] = select(apart, splat(0), p.normal_mass);
       rhs[i] = impulse[i];

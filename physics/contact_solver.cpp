@@ -46,7 +46,7 @@ bool clamp_to_disc(Real& j1, Real& j2, Real limit, Real slip = INFINITY) {
 // pair, one normal) is taken from its first point's, once built.
 ContactConstraint make_constraint(const Contact& contact, const std::vector<Body>& bodies, const std::vector<BodyState>& states,
                                   const std::vector<int>& slots, const ContactSolverSettings& settings, const Vec3& gravity,
-                                  const Softness& softness, const ContactConstraint* first) {
+                                  const ContactConstraint* first) {
   const Body& body_a = bodies[contact.body_a];
   const Body& body_b = bodies[contact.body_b];
   ContactConstraint c;
@@ -73,13 +73,11 @@ ContactConstraint make_constraint(const Contact& contact, const std::vector<Body
   if (first) {
     c.friction = first->friction;
     c.restitution = first->restitution;
-    c.softness = first->softness;
     c.normal_acceleration = first->normal_acceleration;
     return c;
   }
   c.friction = settings.friction ? mix_friction(body_a.material.friction, body_b.material.friction) : 0;
   c.restitution = mix_restitution(body_a.material.restitution, body_b.material.restitution);
-  c.softness = softness;
   c.normal_acceleration = ((sa.inv_mass > 0 ? gravity : Vec3::Zero()) - (sb.inv_mass > 0 ? gravity : Vec3::Zero())).dot(c.normal);
   return c;
 }
@@ -120,7 +118,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   // made, a 1 kg box between the ground and a 100 kg box rattles at 0.1-0.3 m/s for ever: its
   // contact with the ground, four times as stiff, and the one above it give it a mode at about
   // 2.2 times the contacts' frequency, beyond what a sub-step at 1/6 of its rate holds.
-  const Softness softness = make_softness(hertz, settings.contact_damping_ratio, h);
+  softness_ = make_softness(hertz, settings.contact_damping_ratio, h);
   // The constraints are laid out in the sweeps' order: a thread's share is then one block of memory.
   const std::vector<int>& slots = schedule_.slots();
   const std::vector<int>& order = schedule_.order();
@@ -178,7 +176,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
       const auto [same_pair, other_pair] = previous_range_[order[step]];
       for (int i = 0; i < m.count; ++i) {
         ContactConstraint& c = constraints_[m.first + i];
-        c = make_constraint(contacts[first + i], bodies, states, slots, settings, gravity, softness,
+        c = make_constraint(contacts[first + i], bodies, states, slots, settings, gravity,
                             i > 0 ? &constraints_[m.first] : nullptr);
         for (int previous = same_pair; previous != other_pair; ++previous) {
           const ManifoldWarm& pm = previous_warm_manifolds_[previous_pairs_[previous].manifold];
@@ -231,9 +229,6 @@ void ContactSolver::prepare_manifold(ManifoldConstraint& m, ManifoldLanes& block
   m.friction = first.friction;
   m.restitution = first.restitution;
   block.can_bounce = block.can_bounce || m.restitution > 0;
-  block.bias_rate[l] = first.softness.bias_rate;
-  block.mass_scale[l] = first.softness.mass_scale;
-  block.impulse_scale[l] = first.softness.impulse_scale;
   Vec3 centre = Vec3::Zero();
   for (int i = 0; i < m.count; ++i) centre += constraints_[m.first + i].anchor_a;
   centre /= m.count;  // relative to A

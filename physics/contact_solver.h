@@ -57,7 +57,6 @@ struct alignas(64) ContactConstraint {  // a cache line of its own at each end: 
   Vec3 ra_cross_n = Vec3::Zero(), rb_cross_n = Vec3::Zero();
   Vec3 angular_a = Vec3::Zero(), angular_b = Vec3::Zero();
   Real friction = 0, restitution = 0;
-  Softness softness;
   Real normal_impulse = 0;             // this sub-step's, warm started from the last one
   // Sums over the whole step, for the records.
   Real total_normal_impulse = 0, total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
@@ -102,7 +101,7 @@ struct alignas(64) ManifoldLanes {
   int first_point = 0;             // in lane_points_
   bool can_bounce = false;         // either has restitution
   V3 normal, tangent1, tangent2;
-  Real2 bias_rate, mass_scale, impulse_scale, friction;
+  Real2 friction;
   Real2 turns_a, turns_b;          // 1 where the body's turning moves the points along the normal
   Real2 coupling[4][4];            // d(normal velocity at i) / d(impulse at j), for the points
   Real2 tangent_mass1, tangent_mass2, twist_mass;
@@ -221,6 +220,7 @@ class ContactSolver {
   bool impulses_stored_ = false;  // store_impulses() since the last prepare()
   Real h_ = 0, stored_h_ = 0;      // this step's sub-step, and the stored impulses'
   ContactSolverSettings settings_;
+  Softness softness_;  // every contact's, for this step's sub-steps (prepare())
   bool backwards_ = false;  // this sub-step's order of a manifold's points (solve_lanes)
   ThreadTeam* team_ = nullptr;
   SweepSchedule schedule_;

@@ -31,6 +31,9 @@ inline WorldSettings without_gravity(ResponseMethod method = ResponseMethod::imp
   return settings;
 }
 
+// The speed of a body's fastest point, at most: |v| + |w| r, r its bounding radius.
+inline Real point_speed(const Body& body) { return body.velocity.norm() + body.angular_velocity.norm() * bounding_radius(body.shape); }
+
 inline Vec3 linear_momentum(const World& world) {
   Vec3 p = Vec3::Zero();
   for (const Body& b : world.bodies()) p += b.mass * b.velocity;

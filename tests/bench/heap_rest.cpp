@@ -8,9 +8,10 @@
 //   heap_rest rocking                        (a box recorded rocking in the heap, see rocking_box)
 // The environment sets the world: ROLL=c contact.rolling_resistance, DAMP=z its damping ratio,
 // HERTZ=f its stiffness, SUBSTEPS=n that many sub-steps always. TRACE=1 prints the fastest body's
-// contact points each step over the last 2 s (FOLLOW=i: body i's instead); MONITOR=1 the fastest body, the count above 1 mm/s and the sub-steps
-// each second from 20 s.
+// contact points each step over the last 2 s (FOLLOW=i: body i's instead); MONITOR=1 prints the
+// fastest body, the count above 1 mm/s and the sub-steps each second from 20 s.
 #include "tests/bench_world.h"
+#include "tests/physics_test_scenes.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -22,6 +23,7 @@
 namespace {
 
 using namespace impulse::physics;
+using test::point_speed;
 
 std::vector<Real> numbers(const std::string& text) {
   std::vector<Real> out;
@@ -29,8 +31,6 @@ std::vector<Real> numbers(const std::string& text) {
   for (std::string item; std::getline(in, item, ',');) out.push_back(std::strtod(item.c_str(), nullptr));
   return out;
 }
-
-Real point_speed(const Body& body) { return body.velocity.norm() + body.angular_velocity.norm() * bounding_radius(body.shape); }
 
 // The fastest body from the first traced step on (or FOLLOW's): its speed, height and kinetic
 // energy, and each of its contact points: the other body, penetration, normal impulse and how
@@ -70,8 +70,8 @@ WorldSettings settings_from_environment() {
 
 // Two unit boxes recorded in the heap of boxes at 30 s (mu 0.5, e 0.5, at 7474757), with their
 // velocities, on the two boxes under them, made still. The upper one lies on the lower, standing
-// on one edge of its face; here it rocks onto the other edge and is thrown back, at 2-10 cm/s,
-// where the same four boxes in Box3D stop (below 0.05 mm/s from 2 s). Prints both moving boxes'
+// on one edge of its face; here it rocks onto the other edge and is thrown back, at 1-11 cm/s,
+// where the same four boxes in Box3D stop (below 0.05 mm/s from 1 s). Prints both moving boxes'
 // fastest point each second for 10 s.
 void rocking_box() {
   struct Recorded {
