@@ -60,7 +60,9 @@ int collide_box_plane(const Body& a, int ia, const Body& b, int ib, Real margin,
     if (separation > margin) continue;
     out.push_back({ia, ib, corner - n * (separation / 2), n, separation, feature::corner(i)});
   }
-  return reduce_manifold(out, first, n);
+  Vec3 t1, t2;  // across the plane's normal, fixed with the plane
+  tangent_basis(n, t1, t2);
+  return reduce_manifold(out, first, n, a.position, 0.8912 * t1 - 0.4536 * t2);
 }
 
 }  // namespace impulse::physics

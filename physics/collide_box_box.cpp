@@ -122,7 +122,8 @@ int face_contact(const BoxFrame& ref, const BoxFrame& inc, int axis, Real sign, 
     out.push_back({ia, ib, vertex.p - n * (separation / 2), normal, separation,
                    feature::face_point(ref_is_b ? 1 : 0, face, vertex.id)});
   }
-  return reduce_manifold(out, first, normal);
+  const Vec3 search = 0.8912 * ref.axes.col(su) - 0.4536 * ref.axes.col(sv);  // across the face, fixed in `ref`
+  return reduce_manifold(out, first, normal, ref.centre, search);
 }
 
 // Closest points of segments p1 + s d1 and p2 + t d2, s and t in [0, 1] (Ericson, 5.1.9).

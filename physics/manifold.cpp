@@ -11,11 +11,10 @@ namespace {
 
 // A later candidate must beat the best so far by this factor (Box3D's pecking order).
 constexpr Real kBias = 0.95;
-constexpr Real kDepthTolerance = 0.0005;  // m: deepest points closer than this are equal
 
 }  // namespace
 
-int reduce_manifold(std::vector<Contact>& out, size_t first, const Vec3& normal) {
+int reduce_manifold(std::vector<Contact>& out, size_t first, const Vec3& normal, const Vec3& origin, const Vec3& search) {
   Contact* points = out.data() + first;
   const int count = int(out.size() - first);
   if (count <= 4) return count;
@@ -23,16 +22,22 @@ int reduce_manifold(std::vector<Contact>& out, size_t first, const Vec3& normal)
   int kept = 0;
   auto taken = [&](int i) { return std::find(keep.begin(), keep.begin() + kept, i) != keep.begin() + kept; };
 
-  // 1. The deepest point.
+  // 1. The point farthest along `search`, a direction fixed in one of the bodies (Box3D's way):
+  // the points keep their ranking while the bodies rock. Depth counts too, but little: ranked by
+  // depth first, the choice flips between points of nearly equal depth as a box rocks, and each
+  // flip hands the load to another set of four, which rocks it on (the heaps that would not rest).
   int best = 0;
-  for (int i = 1; i < count; ++i)
-    if (points[i].separation < points[best].separation - kDepthTolerance) best = i;
+  Real best_score = -INFINITY;
+  for (int i = 0; i < count; ++i) {
+    const Real score = search.dot(points[i].point - origin) - points[i].separation;
+    if (kBias * score > best_score) best = i, best_score = score;
+  }
   keep[kept++] = best;
   const Vec3 a = points[best].point;
 
   // 2. The farthest from it, measured in the contact plane.
   best = -1;
-  Real best_score = 0;
+  best_score = 0;
   for (int i = 0; i < count; ++i) {
     if (taken(i)) continue;
     Vec3 d = points[i].point - a;

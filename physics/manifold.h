@@ -32,10 +32,11 @@ inline constexpr uint32_t edge_pair(int edge_a, int edge_b) {
 }
 }  // namespace feature
 
-// Keeps at most four of the contacts out[first..] (one pair's, sharing `normal`): the deepest,
-// the one farthest from it, then the two that add the most area, in their original order. A
-// candidate displaces an earlier one only when clearly better, so that the choice does not
-// flicker between steps. Returns how many are left.
-int reduce_manifold(std::vector<Contact>& out, size_t first, const Vec3& normal);
+// Keeps at most four of the contacts out[first..] (one pair's, sharing `normal`): the one
+// farthest from `origin` along `search` (a unit direction across the normal, fixed in one of the
+// bodies), the one farthest from it, then the two that add the most area, in their original
+// order. A candidate displaces an earlier one only when clearly better, so that the choice does
+// not flicker between steps. Returns how many are left.
+int reduce_manifold(std::vector<Contact>& out, size_t first, const Vec3& normal, const Vec3& origin, const Vec3& search);
 
 }  // namespace impulse::physics

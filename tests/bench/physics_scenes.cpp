@@ -70,11 +70,11 @@ Scene pyramid(const std::string& name, int base) {
   return s;
 }
 
-Scene boxes() {
+Scene boxes(uint64_t seed) {
   Scene s;
   s.name = "boxes";
   s.bodies.push_back(ground());
-  Random random(4);
+  Random random(seed);
   for (int layer = 0; layer < 10; ++layer) {
     const double shift = layer % 2 ? 1 : 0;
     for (int i = 0; i < 10; ++i)
@@ -116,7 +116,8 @@ Scene make_scene(const std::string& name) {
   if (name == "stack-20") return stack(20);
   if (name == "pyramid") return pyramid(name, 20);
   if (name == "large-pyramid") return pyramid(name, 100);
-  if (name == "boxes") return boxes();
+  if (name == "boxes") return boxes(4);
+  if (name.starts_with("boxes:")) return boxes(std::stoull(name.substr(6)));  // another seed, for tools
   if (name == "spheres") return spheres();
   throw std::invalid_argument("unknown scene '" + name + "'");
 }
