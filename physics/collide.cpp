@@ -26,7 +26,7 @@ int collide_sphere_plane(const Body& a, int ia, const Body& b, int ib, Real marg
   return 1;
 }
 
-int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
+int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out, SatCache* cache) {
   if (a.shape.type > b.shape.type) return collide(b, ib, a, ia, margin, out);
   using enum ShapeType;
   switch (a.shape.type) {
@@ -38,7 +38,7 @@ int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vect
       }
       break;
     case box:
-      if (b.shape.type == box) return collide_boxes(a, ia, b, ib, margin, out);
+      if (b.shape.type == box) return collide_boxes(a, ia, b, ib, margin, out, cache);
       return collide_box_plane(a, ia, b, ib, margin, out);
     case plane:
       break;  // planes are static: two never meet

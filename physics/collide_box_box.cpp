@@ -20,6 +20,9 @@ constexpr Real kAbsoluteTolerance = 0.0005;  // m
 // that flush stacks keep their corner ids (m, capped at 1 % of the reference face): a point
 // may lie this far beyond the reference face's rim.
 constexpr Real kClipTolerance = 0.0005;
+// A cached reference face is used again while its deepest point moved less than this (m; Box3D's
+// linear slop).
+constexpr Real kCacheSlop = 0.005;
 
 bool clearly_greater(Real candidate, Real current) {
   return candidate > current + kRelativeTolerance * std::abs(current) + kAbsoluteTolerance;
@@ -79,9 +82,10 @@ int clip(const Polygon& in, int count, const Vec3& m, Real offset, Real toleranc
 
 // Face contact: the face of `ref` along `axis` (outward normal n pointing at `inc`) against the
 // most opposed face of `inc`, clipped to the reference face's sides. Appends the points within
-// `margin` (normal -n when ref is A, as A is pushed away from B), reduced to four.
+// `margin` (normal -n when ref is A, as A is pushed away from B), reduced to four. `deepest` is
+// the separation of the deepest clipped point, kept or not.
 int face_contact(const BoxFrame& ref, const BoxFrame& inc, int axis, Real sign, bool ref_is_b, int ia, int ib,
-                 Real margin, std::vector<Contact>& out) {
+                 Real margin, std::vector<Contact>& out, Real& deepest) {
   const Vec3 n = sign * ref.axes.col(axis);
 
   // Incident face: the face of `inc` whose outward normal is most against n.
@@ -115,9 +119,11 @@ int face_contact(const BoxFrame& ref, const BoxFrame& inc, int axis, Real sign, 
   const int face = face_index(axis, sign);
   const Real face_offset = n.dot(ref.centre) + ref.half[axis];
   const size_t first = out.size();
+  deepest = INFINITY;
   for (int k = 0; k < count; ++k) {
     const ClipVertex& vertex = (*polygon)[k];
     const Real separation = n.dot(vertex.p) - face_offset;
+    deepest = std::min(deepest, separation);
     if (separation > margin) continue;
     out.push_back({ia, ib, vertex.p - n * (separation / 2), normal, separation,
                    feature::face_point(ref_is_b ? 1 : 0, face, vertex.id)});
@@ -168,8 +174,10 @@ int edge_contact(const BoxFrame& a, const BoxFrame& b, int i, int j, const Vec3&
 // Two boxes: the separating axis test over the 15 axes (3 + 3 face normals, 9 edge cross
 // products). Any axis (or world axis) separating by more than the margin means no contact;
 // otherwise the axis of least penetration, faces preferred, makes the manifold: a reference face
-// with the other box's face clipped to it, or one point between two crossing edges.
-int collide_boxes(const Body& body_a, int ia, const Body& body_b, int ib, Real margin, std::vector<Contact>& out) {
+// with the other box's face clipped to it, or one point between two crossing edges. Last step's
+// reference face (`cache`) comes first while it gives points as deep as before, within a slop.
+int collide_boxes(const Body& body_a, int ia, const Body& body_b, int ib, Real margin, std::vector<Contact>& out,
+                  SatCache* cache) {
   const BoxFrame a{body_a.position, body_a.orientation.toRotationMatrix(), body_a.shape.half_extents};
   const BoxFrame b{body_b.position, body_b.orientation.toRotationMatrix(), body_b.shape.half_extents};
   const Vec3 d = b.centre - a.centre;
@@ -182,6 +190,25 @@ int collide_boxes(const Body& body_a, int ia, const Body& body_b, int ib, Real m
   const Mat3 abs_c = c.cwiseAbs();
   const Vec3 da = a.axes.transpose() * d;  // in A's frame
   const Vec3 db = b.axes.transpose() * d;  // in B's frame
+  auto sign_a = [&](int k) { return da[k] > 0 ? 1 : -1; };  // A's face towards B along axis k
+  auto sign_b = [&](int k) { return db[k] > 0 ? -1 : 1; };  // B's face towards A
+  Real deepest = 0;
+
+  // Last step's reference face, while it still holds (SatCache).
+  if (cache && cache->reference >= 0) {
+    const bool ref_is_b = cache->reference == 1;
+    const int axis = cache->axis;
+    if (cache->sign == (ref_is_b ? sign_b(axis) : sign_a(axis))) {
+      const size_t first = out.size();
+      const int added = face_contact(ref_is_b ? b : a, ref_is_b ? a : b, axis, cache->sign, ref_is_b, ia, ib, margin, out, deepest);
+      if (added > 0 && std::abs(deepest - cache->deepest) < kCacheSlop) {
+        cache->deepest = float(deepest);
+        return added;
+      }
+      out.resize(first);
+    }
+  }
+  if (cache) cache->reference = -1;
 
   int face_a = 0, face_b = 0;
   Real sep_a = -INFINITY, sep_b = -INFINITY;
@@ -216,8 +243,10 @@ int collide_boxes(const Body& body_a, int ia, const Body& body_b, int ib, Real m
   if (n_edge.dot(d) < 0) n_edge = -n_edge;  // from A to B
 
   if (!use_edge) {
-    const int added = use_b ? face_contact(b, a, face_b, db[face_b] > 0 ? -1 : 1, true, ia, ib, margin, out)
-                            : face_contact(a, b, face_a, da[face_a] > 0 ? 1 : -1, false, ia, ib, margin, out);
+    const int axis = use_b ? face_b : face_a;
+    const int sign = use_b ? sign_b(face_b) : sign_a(face_a);
+    const int added = face_contact(use_b ? b : a, use_b ? a : b, axis, sign, use_b, ia, ib, margin, out, deepest);
+    if (added > 0 && cache) *cache = {int8_t(use_b ? 1 : 0), int8_t(axis), int8_t(sign), float(deepest)};
     if (added > 0 || edge_i < 0) return added;
   }
   return edge_contact(a, b, edge_i, edge_j, n_edge, ia, ib, margin, out);

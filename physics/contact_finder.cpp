@@ -31,27 +31,36 @@ void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint
     boxes_[i] = body_aabb(bodies[i], base_margin / 2 + motion_bounds_[i]);
   }
   broad_phase_.find_pairs(boxes_, awake, pairs_, &team);
+  // Each pair starts from last call's cache (both lists in increasing pair order: one merge).
+  caches_.assign(pairs_.size(), SatCache{});
+  auto before = [](const BodyPair& x, const BodyPair& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; };
+  for (size_t k = 0, p = 0; k < pairs_.size(); ++k) {
+    while (p < previous_pairs_.size() && before(previous_pairs_[p], pairs_[k])) ++p;
+    if (p < previous_pairs_.size() && previous_pairs_[p] == pairs_[k]) caches_[k] = previous_caches_[p];
+  }
   auto collide_range = [&](size_t begin, size_t end, std::vector<Contact>& contacts) {
     for (size_t k = begin; k < end; ++k) {
       const BodyPair& pair = pairs_[k];
       const Real margin = base_margin + motion_bounds_[pair.a] + motion_bounds_[pair.b];
-      collide(bodies[pair.a], pair.a, bodies[pair.b], pair.b, margin, contacts);
+      collide(bodies[pair.a], pair.a, bodies[pair.b], pair.b, margin, contacts, &caches_[k]);
     }
   };
   const size_t threads = std::min(size_t(team.size()), pairs_.size() / kMinPairsPerThread);
   if (threads < 2) {
     collide_range(0, pairs_.size(), out);
-    return;
+  } else {
+    // Consecutive runs of pairs, one per thread, joined in order afterwards.
+    shares_.resize(threads - 1);
+    team.run([&](int thread) {
+      if (size_t(thread) >= threads) return;
+      std::vector<Contact>& contacts = thread == 0 ? out : shares_[thread - 1];
+      contacts.clear();
+      collide_range(pairs_.size() * thread / threads, pairs_.size() * (thread + 1) / threads, contacts);
+    });
+    for (const std::vector<Contact>& share : shares_) out.insert(out.end(), share.begin(), share.end());
   }
-  // Consecutive runs of pairs, one per thread, joined in order afterwards.
-  shares_.resize(threads - 1);
-  team.run([&](int thread) {
-    if (size_t(thread) >= threads) return;
-    std::vector<Contact>& contacts = thread == 0 ? out : shares_[thread - 1];
-    contacts.clear();
-    collide_range(pairs_.size() * thread / threads, pairs_.size() * (thread + 1) / threads, contacts);
-  });
-  for (const std::vector<Contact>& share : shares_) out.insert(out.end(), share.begin(), share.end());
+  previous_pairs_ = pairs_;
+  std::swap(previous_caches_, caches_);
 }
 
 }  // namespace impulse::physics

@@ -3,6 +3,7 @@
 #pragma once
 #include "physics/body.h"
 #include "physics/broadphase.h"
+#include "physics/collide.h"
 #include "physics/contact.h"
 #include "physics/thread_team.h"
 
@@ -27,6 +28,9 @@ class ContactFinder {
   std::vector<Real> motion_bounds_;
   std::vector<BodyPair> pairs_;
   std::vector<std::vector<Contact>> shares_;  // each helper thread's contacts, in pair order
+  std::vector<SatCache> caches_;              // pairs_[k]'s
+  std::vector<BodyPair> previous_pairs_;      // last call's pairs, in order, and their caches
+  std::vector<SatCache> previous_caches_;
 };
 
 // Farthest a body's surface can travel in dt: bounds the speculative margin.

@@ -305,6 +305,38 @@ TEST_F(SphereBox, OrderDoesNotMatter) {
   EXPECT_EQ(out[0].body_b, 7);
 }
 
+// A unit box lying on another, overhanging it by 0.2 m and tilted `milliradians` about x (at 2
+// mrad its lowest points are 0.2 mm into the lower box). Without a cache the reference face
+// passes from the lower box to the upper between 2 and 3 mrad.
+Body tilted_on_unit_box(Real milliradians) {
+  const Real angle = milliradians / 1000;
+  return unit_box(Vec3(0, 1 + 0.5 * (std::cos(angle) + std::sin(angle)) - 0.5 - 0.0006, 0.2), Quat(Eigen::AngleAxis<Real>(angle, Vec3::UnitX())));
+}
+
+int reference_box(const std::vector<Contact>& cs) { return int((cs.at(0).feature >> 12) & 1); }
+
+TEST(BoxBox, ARockingBoxKeepsItsReferenceFaceWhileItsPointsStayWithinASlop) {
+  const Body lower = unit_box(Vec3::Zero());
+  auto collide_cached = [&](Real milliradians, SatCache* cache) {
+    std::vector<Contact> out;
+    collide(lower, 0, tilted_on_unit_box(milliradians), 1, kMargin, out, cache);
+    return out;
+  };
+  ASSERT_EQ(reference_box(collide_cached(2, nullptr)), 0) << "the lower box's face";
+  ASSERT_EQ(reference_box(collide_cached(3, nullptr)), 1) << "the upper box's face";
+
+  SatCache cache;
+  EXPECT_EQ(reference_box(collide_cached(2, &cache)), 0);
+  EXPECT_EQ(cache.reference, 0);
+  const auto rocked = collide_cached(3, &cache);
+  EXPECT_EQ(reference_box(rocked), 0) << "kept: its deepest point moved 0.2 mm";
+  EXPECT_EQ(rocked.size(), 4u);
+  // At 40 mrad the deepest point on the cached face is 6.8 mm from where it was, beyond the slop:
+  // the axes are tested again.
+  EXPECT_EQ(reference_box(collide_cached(40, &cache)), 1);
+  EXPECT_EQ(cache.reference, 1);
+}
+
 // --- feature ids -------------------------------------------------------------------------------
 
 TEST(Features, UnchangedAfterATinyMotion) {

@@ -69,47 +69,11 @@ WorldSettings settings_from_environment() {
   return settings;
 }
 
-// Two unit boxes recorded in the heap of boxes at 30 s (mu 0.5, e 0.5, at 7474757), with their
-// velocities, on the two boxes under them, made still. The upper one lies on the lower, standing
-// on one edge of its face; here it rocks onto the other edge and is thrown back, at 1-11 cm/s,
-// where the same four boxes in Box3D stop (below 0.05 mm/s from 1 s). Prints both moving boxes'
+// The two boxes of test::add_rocking_boxes, on their still supports. Prints both moving boxes'
 // fastest point each second for 10 s.
 void rocking_box() {
-  struct Recorded {
-    Vec3 position;
-    Quat orientation;  // w, x, y, z
-    Vec3 velocity, angular_velocity;
-    bool moves;
-  };
-  const Recorded boxes[] = {
-      {{2.3191686619049601, 4.4994847841853938, -6.176230234612178},
-       {0.61812044265754562, -0.35888904856218456, -0.34950978668310967, 0.60577939730870423},
-       {-0.03055826885571155, -0.0036802363683349627, -0.018098912796909509},
-       {-0.038357562999680843, -0.00039911865699238027, 0.06507403972740225}, true},
-      {{1.8883365407103743, 3.5042127048054814, -6.3985654749851424},
-       {-0.6808522825131561, 0.68804867890782007, 0.17309677110356342, 0.18184249416280465},
-       {0.00084823423130562386, -0.0011547919930352301, 0.00064926870359496283},
-       {-0.00050297861583570313, -0.0015325280545705365, -0.003024350554673334}, true},
-      {{2.4960008257704671, 2.4999504223972751, -5.9177948961162912},
-       {0.38859292013805308, -0.0070638916704619725, -0.92138129880426534, 0.0014649460105794791}, Vec3::Zero(), Vec3::Zero(), false},
-      {{1.5187420205758144, 2.5057147310796029, -6.7667752459973469},
-       {0.28214844999139033, 0.65502578520188925, 0.64578815807446244, 0.27256398841170765}, Vec3::Zero(), Vec3::Zero(), false},
-  };
   World world(settings_from_environment());
-  std::vector<int> moving;
-  for (const Recorded& r : boxes) {
-    BodyDef def;
-    def.shape = Shape::box(Vec3::Constant(0.5));
-    def.is_static = !r.moves;
-    def.mass = 1;
-    def.material = {0.5, 0.5};
-    def.position = r.position;
-    def.orientation = r.orientation;
-    def.velocity = r.velocity;
-    def.angular_velocity = r.angular_velocity;
-    const int body = world.add_body(def);
-    if (r.moves) moving.push_back(body);
-  }
+  const std::vector<int> moving = test::add_rocking_boxes(world);
   std::printf("rocking box: fastest point of the upper and the lower box, mm/s\n");
   for (int step = 1; step <= 10 * 60; ++step) {
     world.step();
