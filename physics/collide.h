@@ -23,7 +23,7 @@ struct SatCache {
 // `margin` (a positive margin yields speculative contacts). The appended contacts may have A and B
 // swapped so that A is the first shape in the order sphere, box, plane. Returns how many it added.
 // Feature ids are laid out in manifold.h. `cache`, if given, is the pair's SatCache, read and
-// updated.
+// updated (box pairs use it).
 int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out,
             SatCache* cache = nullptr);
 

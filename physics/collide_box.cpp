@@ -62,7 +62,7 @@ int collide_box_plane(const Body& a, int ia, const Body& b, int ib, Real margin,
   }
   Vec3 t1, t2;  // across the plane's normal, fixed with the plane
   tangent_basis(n, t1, t2);
-  return reduce_manifold(out, first, n, a.position, 0.8912 * t1 - 0.4536 * t2);
+  return reduce_manifold(out, first, n, a.position, search_direction(t1, t2));
 }
 
 }  // namespace impulse::physics

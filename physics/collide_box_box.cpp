@@ -128,8 +128,7 @@ int face_contact(const BoxFrame& ref, const BoxFrame& inc, int axis, Real sign, 
     out.push_back({ia, ib, vertex.p - n * (separation / 2), normal, separation,
                    feature::face_point(ref_is_b ? 1 : 0, face, vertex.id)});
   }
-  const Vec3 search = 0.8912 * ref.axes.col(su) - 0.4536 * ref.axes.col(sv);  // across the face, fixed in `ref`
-  return reduce_manifold(out, first, normal, ref.centre, search);
+  return reduce_manifold(out, first, normal, ref.centre, search_direction(ref.axes.col(su), ref.axes.col(sv)));
 }
 
 // Closest points of segments p1 + s d1 and p2 + t d2, s and t in [0, 1] (Ericson, 5.1.9).

@@ -59,7 +59,7 @@ void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint
     });
     for (const std::vector<Contact>& share : shares_) out.insert(out.end(), share.begin(), share.end());
   }
-  previous_pairs_ = pairs_;
+  std::swap(previous_pairs_, pairs_);  // pairs_ is refilled by the next call's broad phase
   std::swap(previous_caches_, caches_);
 }
 
