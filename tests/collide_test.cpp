@@ -310,7 +310,7 @@ TEST_F(SphereBox, OrderDoesNotMatter) {
 // passes from the lower box to the upper between 2 and 3 mrad.
 Body tilted_on_unit_box(Real milliradians) {
   const Real angle = milliradians / 1000;
-  return unit_box(Vec3(0, 1 + 0.5 * (std::cos(angle) + std::sin(angle)) - 0.5 - 0.0006, 0.2), Quat(Eigen::AngleAxis<Real>(angle, Vec3::UnitX())));
+  return unit_box(Vec3(0, 0.5 + 0.5 * (std::cos(angle) + std::sin(angle)) - 0.0006, 0.2), about(Vec3::UnitX(), angle * 180 / std::numbers::pi));
 }
 
 int reference_box(const std::vector<Contact>& cs) { return int((cs.at(0).feature >> 12) & 1); }

@@ -2,6 +2,7 @@
 #pragma once
 #include "physics/world.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace impulse::physics::test {
@@ -35,6 +36,19 @@ inline WorldSettings without_gravity(ResponseMethod method = ResponseMethod::imp
 
 // The speed of a body's fastest point, at most: |v| + |w| r, r its bounding radius.
 inline Real point_speed(const Body& body) { return body.velocity.norm() + body.angular_velocity.norm() * bounding_radius(body.shape); }
+
+// Steps `world` on until `until_step` and returns the fastest point_speed of any moving body from
+// `from_step` on (steps counted from 1).
+inline Real fastest_from(World& world, int from_step, int until_step) {
+  Real fastest = 0;
+  for (int step = 1; step <= until_step; ++step) {
+    world.step();
+    if (step < from_step) continue;
+    for (const Body& body : world.bodies())
+      if (!body.is_static()) fastest = std::max(fastest, point_speed(body));
+  }
+  return fastest;
+}
 
 // Two unit boxes recorded in the heap of boxes at 30 s (mu 0.5, e 0.5), with their velocities, on
 // the two boxes under them, made still. The upper one lies on the lower, standing on one edge of
