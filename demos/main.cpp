@@ -97,7 +97,8 @@ constexpr const char* kExitCodes =
 int main(int argc, char** argv) {
   CLI::App app{"impulse: rigid-body collision physics rendered into teaching videos, headless.\n"
                "Scene files are TOML (see README.md, 'Scene files'); videos are H.264 MP4 (BT.709, faststart),\n"
-               "written as NAME.mp4.part and renamed when complete."};
+               "written to a temporary of their own (NAME.mp4.PID-N.part) and renamed when complete:\n"
+               "renders into one path at once each leave a complete video, the last to finish wins."};
   app.footer(std::string("\nExamples:\n"
                          "  impulse render assets/scenes/bounce.toml                  # -> out/bounce.mp4\n"
                          "  impulse render assets/scenes/bounce.toml --set world.friction=false -o no_friction.mp4\n"

@@ -12,7 +12,7 @@
 namespace impulse::demos {
 namespace {
 
-// A CSV file written as NAME.part and renamed when complete.
+// A CSV file written to its own temporary and renamed when complete (render/part_file.h).
 class CsvFile {
  public:
   CsvFile(const std::string& path, const char* header) : part_(path), file_(std::fopen(part_.part_path().c_str(), "w")) {

@@ -1,5 +1,8 @@
 #include "render/part_file.h"
 
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -9,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <system_error>
 #include <utility>
 
@@ -76,19 +80,80 @@ void unregister_for_signals(int index) {
   signal_slots[index].taken.store(false);
 }
 
+
+// The process id in a temporary's name NAME.PID-N.part, if `file_name` has that form.
+std::optional<pid_t> writer_of(const std::string& file_name) {
+  const std::string suffix = ".part";
+  if (file_name.size() <= suffix.size() || file_name.compare(file_name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return std::nullopt;
+  const std::string stem = file_name.substr(0, file_name.size() - suffix.size());
+  const size_t dot = stem.rfind('.');
+  if (dot == std::string::npos || dot == 0) return std::nullopt;
+  const std::string id = stem.substr(dot + 1);  // PID-N
+  const size_t dash = id.find('-');
+  const auto all_digits = [](const std::string& text) {
+    return !text.empty() && text.size() <= 10 && text.find_first_not_of("0123456789") == std::string::npos;
+  };
+  if (dash == std::string::npos || !all_digits(id.substr(0, dash)) || !all_digits(id.substr(dash + 1))) return std::nullopt;
+  return static_cast<pid_t>(std::stoll(id.substr(0, dash)));
+}
+
+// A temporary may be removed when its writer is gone: nobody holds its lock (a lock dies with its
+// process, also on SIGKILL) and its process id is not alive (a writer that has created its file but
+// not yet locked it is alive). A file that is not regular, or that we cannot open, is left alone.
+void remove_if_writer_died(const fs::path& path, pid_t writer) {
+  if (kill(writer, 0) == 0 || errno != ESRCH) return;
+  const int fd = open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return;
+  struct stat status {};
+  if (fstat(fd, &status) == 0 && S_ISREG(status.st_mode) && flock(fd, LOCK_EX | LOCK_NB) == 0) unlink(path.c_str());
+  close(fd);
+}
+
+void remove_dead_writers_temporaries(const fs::path& directory) {
+  std::error_code error;
+  fs::directory_iterator entries(directory.empty() ? fs::path(".") : directory, error);
+  if (error) return;  // an unreadable directory: the temporary's creation reports it
+  for (const fs::directory_entry& entry : entries) {
+    const std::optional<pid_t> writer = writer_of(entry.path().filename().string());
+    if (writer && *writer != getpid()) remove_if_writer_died(entry.path(), *writer);
+  }
+}
+
+// Creates FINAL.PID-N.part exclusively and locks it; returns its descriptor and path.
+std::pair<int, std::string> create_own_temporary(const std::string& final_path) {
+  static std::atomic<unsigned> next_number{0};
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const std::string path = final_path + "." + std::to_string(getpid()) + "-" + std::to_string(next_number++) + ".part";
+    const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0 && errno == EEXIST) continue;  // taken: left by an earlier process with this id
+    if (fd < 0) throw OutputError("cannot create " + path + ": " + std::strerror(errno));
+    if (flock(fd, LOCK_EX) != 0) {
+      const std::string reason = std::strerror(errno);
+      close(fd);
+      unlink(path.c_str());
+      throw OutputError("cannot lock " + path + ": " + reason);
+    }
+    return {fd, path};
+  }
+  throw OutputError("cannot create a temporary beside " + final_path + ": 100 names taken");
+}
+
 }  // namespace
 
-PartFile::PartFile(std::string final_path)
-    : final_path_(resolve_links(final_path)), part_path_(final_path_ + ".part") {
+PartFile::PartFile(std::string final_path) : final_path_(resolve_links(final_path)) {
   refuse_unless_regular(final_path_, final_path_);
-  refuse_unless_regular(part_path_, part_path_);
-  std::remove(part_path_.c_str());  // a regular file left by a run that was killed
+  remove_dead_writers_temporaries(fs::path(final_path_).parent_path());
+  const auto [fd, path] = create_own_temporary(final_path_);
+  lock_fd_ = fd;
+  part_path_ = path;
   signal_slot_ = register_for_signals(part_path_);
 }
 
 PartFile::~PartFile() {
-  if (!committed_) std::remove(part_path_.c_str());
+  if (!committed_) unlink(part_path_.c_str());
   unregister_for_signals(signal_slot_);
+  close(lock_fd_);
 }
 
 void PartFile::commit() {
@@ -98,6 +163,8 @@ void PartFile::commit() {
   }
   committed_ = true;
 }
+
+bool is_part_file_name(const std::string& file_name) { return writer_of(file_name).has_value(); }
 
 void remove_unfinished_part_files() noexcept {
   for (SignalSlot& slot : signal_slots) {

@@ -6,7 +6,8 @@
 
 namespace impulse::render {
 
-// 8-bit RGBA. Writes `path + ".part"` and renames it, so `path` is either complete or untouched.
+// 8-bit RGBA. Writes its own temporary and renames it (part_file.h), so `path` is either complete
+// or untouched.
 void write_png(const std::string& path, const Frame& frame);
 
 // Any PNG (grey, palette, 16-bit, interlaced, with or without alpha) as 8-bit RGBA.

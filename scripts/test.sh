@@ -35,8 +35,9 @@ tsan_tests='^(Determinism\.|Heap\.Thousand|Stack\.PyramidOf21Boxes|Video\.|Rende
 # Left out of the ASan+UBSan run, and only for their time: the four longest runs of the solver,
 # 389 s, 355 s, 265 s and 135 s under ASan+UBSan on two cores (11-70 s without). They run the code
 # the 1000-box heap, the 210-box pyramid and the determinism test run under ASan already, for more
-# steps and bodies; the Release ctest runs them.
-asan_exclude='^(Stack\.LargePyramidOf5050BoxesStandsFiveHundredSteps|Heap/LongRun\.|Heap\.BoxesComeToRestWithSleepingOff)'
+# steps and bodies; the Release ctest runs them. Likewise the 120 renders of the concurrent-writers
+# test (about 70 s in Release): every other render test runs the same temporary-file code under ASan.
+asan_exclude='^(Stack\.LargePyramidOf5050BoxesStandsFiveHundredSteps|Heap/LongRun\.|Heap\.BoxesComeToRestWithSleepingOff|OutputConcurrency\.TwoOrFour)'
 
 # Sanitizer builds use clang: GCC 12 compiles the solver with ASan+UBSan and -g 7x slower (69 s vs
 # 10 s for physics/contact_solver.cpp: its variable tracking), and libFuzzer needs clang anyway.

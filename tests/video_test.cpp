@@ -93,7 +93,7 @@ TEST(Video, UnwritableOutputThrowsAndLeavesNothing) {
   options.video_path = (dir / "no-such-dir" / "ball.mp4").string();
   EXPECT_THROW(demos::render_scene(scene, options), std::runtime_error);
   EXPECT_FALSE(fs::exists(options.video_path));
-  EXPECT_FALSE(fs::exists(options.video_path + ".part"));
+  EXPECT_FALSE(fs::exists(dir / "no-such-dir")) << "nor a temporary, nor its directory";
 }
 
 }  // namespace

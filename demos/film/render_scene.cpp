@@ -60,8 +60,8 @@ std::string vtt_time(double seconds) {
   return text;
 }
 
-// WebVTT: each [[caption]] as a cue in video time (slow motion stretches it), written as
-// NAME.vtt.part and renamed when complete.
+// WebVTT: each [[caption]] as a cue in video time (slow motion stretches it), written to its own
+// temporary and renamed when complete.
 void write_captions(const Scene& scene, const Film& film, const std::string& path) {
   render::PartFile part(path);
   {
