@@ -65,6 +65,13 @@ std::vector<std::vector<CheckResult>> Film::check_results() const {
   return results;
 }
 
+int Film::poster_frame() const {
+  SceneFilm::LabelledPeak peak;
+  for (const auto& film : films_)
+    if (film->labelled_peak().impulse > peak.impulse) peak = film->labelled_peak();
+  return films_.front()->poster_frame(peak);
+}
+
 std::vector<double> Film::impact_times() const {
   std::vector<double> times;
   for (const auto& film : films_) times.insert(times.end(), film->impact_times().begin(), film->impact_times().end());

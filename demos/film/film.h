@@ -48,7 +48,8 @@ class Film {
   int frame_count() const { return films_.front()->frame_count(); }
   int next_frame() const { return films_.front()->next_frame(); }
   double video_time_of(double time) const { return films_.front()->video_time_of(time); }
-  int poster_frame() const { return films_.front()->poster_frame(); }
+  // The poster's frame (SceneFilm::poster_frame): the largest labelled impulse of any pane.
+  int poster_frame() const;
   std::vector<double> impact_times() const;  // every pane's, in order: s of simulated time
   const PaneLayout& layout() const { return layout_; }
   std::vector<std::vector<CheckResult>> check_results() const;  // each pane's scene's [[check]]s

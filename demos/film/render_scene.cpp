@@ -89,7 +89,8 @@ namespace {
 
 // WebVTT chapters (a player's chapter menu): one at the start, and one at each impact that slows
 // the video, impacts within kChapterGap s after one joining its chapter; or, without such
-// impacts, one at each caption. Returns false (and writes nothing) when there is but one chapter.
+// impacts, one at each caption (a caption at the start names the first chapter). Returns false
+// (and writes nothing) when there is neither an impact nor a caption.
 constexpr double kChapterGap = 0.5;
 
 bool write_chapters(const Scene& scene, const Film& film, const std::string& path) {
@@ -102,10 +103,15 @@ bool write_chapters(const Scene& scene, const Film& film, const std::string& pat
     std::snprintf(title, sizeof title, "Impact at t = %.2f s", time);
     starts.emplace_back(time, title);
   }
-  if (starts.size() == 1)
-    for (const CaptionCue& caption : scene.captions)
-      if (caption.start > starts.back().first) starts.emplace_back(caption.start, caption.text);
-  if (starts.size() < 2) return false;
+  bool named = starts.size() > 1;
+  if (!named) {
+    for (const CaptionCue& caption : scene.captions) {
+      if (caption.start < 1e-9 && !named) starts.front().second = caption.text;
+      else if (caption.start > starts.back().first) starts.emplace_back(caption.start, caption.text);
+      named = true;
+    }
+  }
+  if (!named) return false;
   render::PartFile part(path);
   {
     std::ofstream file(part.part_path());

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "demos/film/captions.h"
+
 namespace impulse::demos {
 
 SceneFilm::SceneFilm(const Scene& scene) : scene_(scene), take_(scene), camera_path_(scene), bodies_(take_.bodies()) {}
@@ -43,6 +45,18 @@ std::vector<std::unique_ptr<SceneFilm>> SceneFilm::together(const std::vector<co
 
 void SceneFilm::develop(int width, int height, const TakeSummary& summary) {
   impact_times_ = summary.impact_times;
+  labelled_peak_ = {};
+  const bool labelled = scene_.overlay.label == "impulse";
+  if (labelled || scene_.draw.impulses) {
+    const int body = labelled ? label_body(scene_) : -1;
+    for (size_t frame = 0; frame < samples_.size(); ++frame) {
+      const LabelledImpulse labelled = labelled_impulse(samples_[frame].contacts, bodies_, body);
+      // As the label: 0.005 N s and more (frame_overlay.cpp).
+      if (labelled.contact != nullptr && labelled.contact->normal_impulse >= 0.005 &&
+          labelled.contact->normal_impulse > labelled_peak_.impulse)
+        labelled_peak_ = {int(frame), labelled.contact->normal_impulse};
+    }
+  }
   scales_ = arrow_scales(scene_, summary);
   overlay_maker_.emplace(scene_, summary, scales_, width, height);
 }
@@ -83,10 +97,25 @@ double SceneFilm::video_time_of(double time) const {
   return double(shown - moments_.begin()) / scene_.video.fps;
 }
 
-int SceneFilm::poster_frame() const {
-  if (impact_times_.empty()) return frame_count() / 2;
-  const int after = int(std::lround((video_time_of(impact_times_.front()) + 0.25) * scene_.video.fps));
-  return std::clamp(after, 0, frame_count() - 1);
+int SceneFilm::poster_frame(const LabelledPeak& peak) const {
+  int frame = frame_count() / 2;
+  if (scene_.playback.poster) {
+    frame = int(std::lround(video_time_of(*scene_.playback.poster) * scene_.video.fps));
+  } else if (peak.frame >= 0) {
+    frame = peak.frame;
+  } else if (!impact_times_.empty()) {
+    frame = int(std::lround((video_time_of(impact_times_.front()) + 0.25) * scene_.video.fps));
+  }
+  frame = std::clamp(frame, 0, frame_count() - 1);
+  const auto fading = [&](int f) {
+    for (const render::Caption& caption : captions_at(scene_.captions, moments_[f].time))
+      if (caption.opacity < 1) return true;
+    return false;
+  };
+  for (int distance = 0; distance < frame_count(); ++distance)
+    for (const int f : {frame + distance, frame - distance})
+      if (f >= 0 && f < frame_count() && !fading(f)) return f;
+  return frame;
 }
 
 void SceneFilm::next(ScenePicture& picture) {

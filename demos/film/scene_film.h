@@ -42,9 +42,19 @@ class SceneFilm {
   // Seconds into the video at which simulated time `time` is first shown (slow motion included);
   // the video's length for a time past the last frame.
   double video_time_of(double time) const;
-  // A frame where something happens, for a poster: a quarter second of video after the first
-  // impact that slows the video, else the middle frame.
-  int poster_frame() const;
+  // The largest impulse the "impulse" label writes in any frame (without that label, the largest
+  // impulse arrow on a moving body), and the first frame that shows it; frame -1 when none shows.
+  struct LabelledPeak {
+    int frame = -1;
+    double impulse = 0;
+  };
+  LabelledPeak labelled_peak() const { return labelled_peak_; }
+  // The frame that teaches, for a poster: the first frame showing [playback] poster's moment when
+  // it is set; else `peak`'s frame (the run's largest labelled impulse); else a quarter second of
+  // video after the first impact that slows the video; else the middle frame. A frame where a
+  // caption fades in or out gives way to the nearest one where none does.
+  int poster_frame(const LabelledPeak& peak) const;
+  int poster_frame() const { return poster_frame(labelled_peak_); }
   const std::vector<double>& impact_times() const { return impact_times_; }  // s: those that slow the video
   std::vector<CheckResult> check_results() const { return take_.check_results(); }
   int next_frame() const { return frame_; }
@@ -70,6 +80,7 @@ class SceneFilm {
   ArrowScales scales_;
   std::optional<FrameOverlay> overlay_maker_;
   std::vector<double> impact_times_;
+  LabelledPeak labelled_peak_;
   CameraPath camera_path_;
   std::vector<physics::Body> bodies_;  // the take's, moved to each frame's sample
   int frame_ = 0;

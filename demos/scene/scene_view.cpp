@@ -154,6 +154,7 @@ void read_playback(TableReader& top, Scene& scene) {
   p.slow_motion_impulse = r.number("slow_motion_impulse", p.slow_motion_impulse, 0);
   p.slow_motion_speed = r.number("slow_motion_speed", p.slow_motion_speed, 0.01, 1);
   p.slow_motion_window = r.number("slow_motion_window", p.slow_motion_window, 0, 10, true);
+  if (r.get("poster")) p.poster = r.number("poster", 0, 0, scene.duration);
   r.finish();
 }
 
