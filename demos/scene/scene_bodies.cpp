@@ -61,7 +61,7 @@ void read_body(const toml::table& table, const std::string& path, int index, Sce
   def.orientation = rotation_from_degrees(r.vec3("rotation", Vec3::Zero()));
   def.velocity = r.vec3("velocity", def.velocity, kFastest, "m/s", kFastestWhy);
   def.angular_velocity = r.vec3("angular_velocity", def.angular_velocity, kFastestSpin, "rad/s", kFastestSpinWhy);
-  const Colour colour = r.colour("colour", kBodyPalette[index % std::size(kBodyPalette)]);
+  const Colour colour = r.colour("colour", def.is_static ? kStaticColour : kBodyPalette[index % std::size(kBodyPalette)]);
   r.finish();
   add_body(r, def, colour, scene);
 }
