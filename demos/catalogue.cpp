@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 
 namespace fs = std::filesystem;
 
@@ -64,6 +65,7 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
     chosen.push_back(i);
   }
   int exit_code = 0;
+  std::map<std::string, int> failed;  // scene file name -> its exit code, for the gallery
   if (choice.jobs > 1 && chosen.size() > 1) {
     // The longest first, so that the last to end does not start last: an estimate of each scene's
     // work from its length, bodies and panes (its own and rendered alone).
@@ -96,6 +98,7 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
           const auto now = std::chrono::steady_clock::now();
           const double seconds = std::chrono::duration<double>(now - starts[job]).count();
           const std::string outcome = code == 0 ? "done" : "failed (exit " + std::to_string(code) + ")";
+          if (code != 0) failed[scenes[chosen[job]].filename().string()] = code;
           std::fprintf(stderr, "%s: %s in %.1f s; %zu of %zu scenes finished, %.0f s so far\n", line(job).c_str(), outcome.c_str(),
                        seconds, ++finished, jobs.size(), std::chrono::duration<double>(now - began).count());
         });
@@ -106,14 +109,27 @@ int render_catalogue(const std::string& scenes_directory, const std::string& out
       options.video_path = default_video_path(scene.string(), out_directory);
       options.poster_path = demos::poster_path(options.video_path);
       if (choice.only.empty()) std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, scenes.size(), scene.c_str());
-      exit_code = std::max(exit_code, render_one(scene.string(), options, overrides, progress));
-      render_panes_alone(scene.string(), options.video_path, overrides, progress);
+      // A scene that fails is reported and the next one rendered: one takes no other with it.
+      int code = 0;
+      try {
+        code = render_one(scene.string(), options, overrides, progress);
+        render_panes_alone(scene.string(), options.video_path, overrides, progress);
+      } catch (const std::exception& error) {
+        code = report(error);
+      }
+      if (code != 0) failed[scene.filename().string()] = code;
+      exit_code = std::max(exit_code, code);
     }
   }
   if (!choice.only.empty()) return exit_code;  // one job of --jobs: its parent writes the gallery
-  std::fprintf(stderr, "rendered %zu of %zu scenes into %s/\n", chosen.size(), scenes.size(), out_directory.c_str());
-  const int videos = demos::write_gallery(scenes_directory, out_directory);
-  std::fprintf(stderr, "wrote %s/index.html (%d videos)\n", out_directory.c_str(), videos);
+  const auto unrendered = std::count_if(failed.begin(), failed.end(), [](const auto& f) { return f.second != kExitCheckFailed; });
+  std::fprintf(stderr, "rendered %zu of %zu scenes into %s/", chosen.size() - size_t(unrendered), scenes.size(),
+               out_directory.c_str());
+  if (unrendered > 0) std::fprintf(stderr, "; %zu failed", size_t(unrendered));
+  std::fprintf(stderr, "\n");
+  const int videos = demos::write_gallery(scenes_directory, out_directory, failed);
+  std::fprintf(stderr, "wrote %s/index.html (%d videos%s)\n", out_directory.c_str(), videos,
+               failed.empty() ? "" : ", the failed scenes marked");
   return exit_code;
 }
 
