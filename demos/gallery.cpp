@@ -81,7 +81,7 @@ std::string failed_section(const fs::path& scene_file, int exit_code, bool older
   section << "<section id=\"" << html(name) << "-failed\" class=\"failed\">\n<h2>" << html(name) << ": not rendered</h2>\n"
           << "<p>The last catalogue run failed on <code>" << html(scene_file.filename().string()) << "</code> (exit code "
           << exit_code << ": " << html(exit_meaning(exit_code)) << ")."
-          << (older_video ? " The video below is from an earlier run." : "") << " To see why: <code>impulse render "
+          << (older_video ? " The video below is the last one completed." : "") << " To see why: <code>impulse render "
           << html(scene_file.string()) << "</code></p>\n</section>\n";
   return section.str();
 }
