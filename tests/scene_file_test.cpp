@@ -1,9 +1,12 @@
 // Scene files: good ones load, bad ones are refused with file, line, field and reason.
+#include "demos/scene/rotation_degrees.h"
 #include "demos/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <fstream>
 
 namespace impulse::demos {
@@ -94,6 +97,24 @@ TEST(SceneFile, RotationTurnsAboutWorldXThenYThenZRightHanded) {
   const physics::Quat q = both.bodies[0].orientation;
   EXPECT_TRUE((q * physics::Vec3::UnitY()).isApprox(physics::Vec3::UnitX(), 1e-12)) << (q * physics::Vec3::UnitY()).transpose();
   EXPECT_TRUE((q * physics::Vec3::UnitZ()).isApprox(-physics::Vec3::UnitY(), 1e-12)) << (q * physics::Vec3::UnitZ()).transpose();
+}
+
+// sin and cos without libm (the same bits on every machine): exact at multiples of 90 degrees,
+// within 1e-15 of std::sin and std::cos elsewhere (their angle taken within 180 degrees first, as
+// radians far from 0 carry the rounding of degrees times pi/180).
+TEST(SceneFile, SinAndCosOfDegreesAreExactAtRightAnglesAndCloseElsewhere) {
+  for (const double right : {-720.0, -270.0, -180.0, -90.0, 0.0, 90.0, 180.0, 270.0, 360.0, 450.0}) {
+    const auto [s, c] = sin_cos_degrees(right);
+    const int quarter = ((int(right) / 90) % 4 + 4) % 4;
+    EXPECT_EQ(s, (quarter == 1) - (quarter == 3)) << right;
+    EXPECT_EQ(c, (quarter == 0) - (quarter == 2)) << right;
+  }
+  for (double degrees = -725; degrees < 725; degrees += 0.37) {
+    const auto [s, c] = sin_cos_degrees(degrees);
+    const double radians = std::remainder(degrees, 360.0) * std::numbers::pi / 180;
+    EXPECT_NEAR(s, std::sin(radians), 1e-15) << degrees;
+    EXPECT_NEAR(c, std::cos(radians), 1e-15) << degrees;
+  }
 }
 
 // A plane is the points x with normal·x = offset, whatever the normal's length.

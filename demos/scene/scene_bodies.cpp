@@ -1,4 +1,5 @@
 // [world], [[body]] and [[joint]]: what the physics simulates.
+#include "demos/scene/rotation_degrees.h"
 #include "demos/scene/scene_overrides.h"
 #include "demos/scene/scene_sections.h"
 
@@ -13,13 +14,6 @@ namespace {
 
 using physics::Real;
 using physics::Vec3;
-
-// Degrees about x, then y, then z (each about the world axis).
-physics::Quat rotation_from_degrees(const Vec3& degrees) {
-  const Vec3 r = degrees * (std::numbers::pi / 180);
-  using Turn = Eigen::AngleAxis<Real>;
-  return physics::Quat(Turn(r.z(), Vec3::UnitZ()) * Turn(r.y(), Vec3::UnitY()) * Turn(r.x(), Vec3::UnitX()));
-}
 
 // Appends a body after the engine's own checks, reported at the table's line.
 void add_body(TableReader& r, const physics::BodyDef& def, Colour colour, Scene& scene) {
