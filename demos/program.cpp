@@ -81,6 +81,18 @@ int report_checks(const std::string& scene_path, const std::vector<demos::CheckR
   return failed > 0 ? kExitCheckFailed : 0;
 }
 
+std::string exit_meaning(int exit_code) {
+  switch (exit_code) {
+    case 0: return "done";
+    case kExitBadInput: return "the scene file or the command line is wrong";
+    case kExitCheckFailed: return "a [[check]] of the scene failed";
+    case kExitOutput: return "the output cannot be written";
+    case kExitFailure: return "the renderer or the encoder failed";
+  }
+  if (exit_code > 128) return "ended by signal " + std::to_string(exit_code - 128);
+  return "failed";
+}
+
 int report(const std::exception& error) {
   std::fprintf(stderr, "impulse: %s\n", error.what());
   if (dynamic_cast<const render::OutputError*>(&error)) return kExitOutput;

@@ -20,6 +20,9 @@ inline constexpr int kExitCheckFailed = 2;  // a [[check]] of the scene did not 
 inline constexpr int kExitOutput = 3;    // the output cannot be written; nothing was replaced, no temporary left
 inline constexpr int kExitFailure = 4;   // anything else went wrong (the renderer, the encoder)
 
+// What an exit code means, in words: "the output cannot be written", "interrupted by signal 15".
+std::string exit_meaning(int exit_code);
+
 // What the command line changes in every scene it reads.
 struct VideoOverrides {
   std::vector<std::string> settings;  // --set KEY=VALUE, over the scene file

@@ -183,10 +183,11 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   // it stops before the encoder (and its .part file) goes.
   render::OverlayPainter painter(video.width, video.height);
   std::atomic<int> frames_finished{0};
+  render::Frame poster_frame;  // kept until the video is complete: a poster only ever sits beside its video
   FramePipeline pipeline(kFramesInFlight, [&](FrameJob& job) {
     painter.paint(job.overlay, job.frame);
     if (wants_png(options, job.index, film.frame_count())) render::write_png(frame_file(options.png_directory, job.index), job.frame);
-    if (!options.poster_path.empty() && job.index == poster) render::write_png(options.poster_path, job.frame);
+    if (!options.poster_path.empty() && job.index == poster) poster_frame = job.frame;
     if (encoder) encoder->add_frame(job.frame);
     ++frames_finished;
   });
@@ -234,6 +235,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   if (encoder) encoder->finish();
   if (encoder && !scene.captions.empty()) write_captions(scene, film, captions_path(options.video_path));
   if (encoder) write_chapters(scene, film, chapters_path(options.video_path));
+  if (!options.poster_path.empty() && !poster_frame.rgba.empty()) render::write_png(options.poster_path, poster_frame);
   return film.check_results();
 }
 

@@ -20,7 +20,8 @@ struct RenderOptions {
   std::string png_directory;     // empty: no PNG frames
   std::vector<int> png_frames;   // which frames become PNGs (numbered from 0); empty: all
   int png_spread = 0;            // > 1 (and no png_frames): that many, evenly from the first to the last
-  std::string poster_path;       // .png of a frame where something happens (SceneFilm::poster_frame); empty: none
+  std::string poster_path;       // .png of a frame where something happens (SceneFilm::poster_frame), written once
+                                 // the video is complete; empty: none
   // Called after each frame is drawn, with the frames finished and the frame count.
   std::function<void(int frames_done, int frame_count)> progress;
   render::RendererSettings renderer;

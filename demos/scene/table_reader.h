@@ -34,6 +34,7 @@ class TableReader {
   [[noreturn]] void fail(const toml::node* node, std::string_view key, const std::string& reason) const;
 
   const toml::node* get(std::string_view key);  // marks the key as known; null when absent
+  bool has(std::string_view key) const { return table_.contains(key); }  // without marking it
   double number(std::string_view key, double fallback, double min = -INFINITY, double max = INFINITY,
                 bool exclusive_min = false);
   int integer(std::string_view key, int fallback, int min, int max);
