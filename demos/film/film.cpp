@@ -102,13 +102,20 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
   for (size_t i = 0; i < pictures.size(); ++i) {
     const render::Overlay& pane = pictures[i].overlay;
     const render::Vec2f origin = layout_.origins[i].cast<float>();
-    for (const render::OverlayLabel& label : pane.labels) labels.push_back({label.anchor + origin, label.text, label.colour});
+    for (render::OverlayLabel label : pane.labels) {
+      label.anchor += origin;
+      for (render::ScreenSegment& segment : label.avoid) {
+        segment.from += origin;
+        segment.to += origin;
+      }
+      labels.push_back(std::move(label));
+    }
     for (render::OverlayPanel panel : pane.panels) {
       panel.corner += origin;
       panels.push_back(std::move(panel));
     }
     // Inside its bottom left corner, clear of the title and legend over the first pane's top.
-    labels.push_back({origin + render::Vec2f(-2 * scale, float(layout_.height) - 4 * scale), panes_[i].label, pane_colour(int(i))});
+    labels.push_back({origin + render::Vec2f(-2 * scale, float(layout_.height) - 4 * scale), panes_[i].label, pane_colour(int(i)), {}});
     for (size_t k = 0; k < pane.plots.size(); ++k) {
       if (k == plots.size()) plots.push_back({pane.plots[k].title, pane.plots[k].unit, pane.plots[k].x_end, pane.plots[k].x_start, 0, 0, {}});
       render::Plot& plot = plots[k];

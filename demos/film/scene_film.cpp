@@ -46,11 +46,12 @@ std::vector<std::unique_ptr<SceneFilm>> SceneFilm::together(const std::vector<co
 void SceneFilm::develop(int width, int height, const TakeSummary& summary) {
   impact_times_ = summary.impact_times;
   labelled_peak_ = {};
-  const bool labelled = scene_.overlay.label == "impulse";
-  if (labelled || scene_.draw.impulses) {
-    const int body = labelled ? label_body(scene_) : -1;
+  const bool label_written = scene_.overlay.label == "impulse";
+  if (label_written || scene_.draw.impulses) {
+    const int body = label_written ? label_body(scene_) : -1;
     for (size_t frame = 0; frame < samples_.size(); ++frame) {
-      const LabelledImpulse labelled = labelled_impulse(samples_[frame].contacts, bodies_, body);
+      const std::vector<physics::ContactRecord> marked = marked_contacts(samples_[frame].contacts, scene_.draw.marked_pairs);
+      const LabelledImpulse labelled = labelled_impulse(marked, bodies_, body);
       // As the label: 0.005 N s and more (frame_overlay.cpp).
       if (labelled.contact != nullptr && labelled.contact->normal_impulse >= 0.005 &&
           labelled.contact->normal_impulse > labelled_peak_.impulse)
@@ -139,6 +140,7 @@ void SceneFilm::next(ScenePicture& picture) {
 
   picture.draw_list =
       scene_draw_list(scene_, bodies_, sample.poses, take_.joints(), sample.contacts, scales_, state.camera);
+  state.arrows = &picture.draw_list.arrows;
   overlay_maker_->make(state, take_.plots(), picture.overlay);
   sample = FrameSample{};  // its memory is no longer needed
   ++frame_;

@@ -91,6 +91,8 @@ void read_draw(TableReader& top, Scene& scene) {
   d.velocities = r.boolean("velocities", d.velocities);
   d.velocity_scale = float(r.number("velocity_scale", d.velocity_scale, 0, 1e6));
   d.sleeping = r.boolean("sleeping", d.sleeping);
+  d.marked_pairs = r.integer("marked_pairs", d.marked_pairs, 0, 1'000'000);
+  d.faint_below = float(r.number("faint_below", d.faint_below, 0, 1));
   r.finish();
 }
 
