@@ -294,15 +294,17 @@ int main(int argc, char** argv) {
       return render_catalogue(scenes_directory, out_directory, progress, catalogue_overrides, catalogue_choice);
     }
     if (*verify) {
-      demos::Scene scene = load(scene_path, verify_overrides.settings);
       demos::RenderOptions options;
-      verify_overrides.apply(scene, options);
+      const Comparison panes = load_panes(scene_path, verify_overrides, options);
       if (!verify_moments.empty()) verify_options.moments = demos::parse_moments(verify_moments, "--at");
       verify_options.scene_path = scene_path;
       verify_options.settings = verify_overrides.settings;
-      const demos::VerifyResult result = demos::verify_scene(scene, options, verify_options);
+      const demos::VerifyResult result = demos::verify_scene(panes.panes, options, verify_options);
       for (const std::string& line : result.lines) std::fprintf(stderr, "%s: %s\n", scene_path.c_str(), line.c_str());
-      const int checks = report_checks(scene_path, result.checks);
+      int checks = 0;
+      for (size_t i = 0; i < result.checks.size(); ++i)
+        checks = std::max(checks, report_checks(panes.panes[i].label.empty() ? scene_path : scene_path + " [" + panes.panes[i].label + "]",
+                                                result.checks[i]));
       return result.passed ? checks : kExitCheckFailed;
     }
     if (*simulate) {

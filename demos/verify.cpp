@@ -30,8 +30,8 @@ struct Still {
 };
 
 // The stills at `moments` (and at each impact that slows the video), with the scene's checks.
-std::vector<Still> render_stills(const Scene& scene, RenderOptions options, const std::vector<double>& moments,
-                                 bool at_impacts, std::vector<CheckResult>& checks) {
+std::vector<Still> render_stills(const std::vector<Pane>& panes, RenderOptions options, const std::vector<double>& moments,
+                                 bool at_impacts, std::vector<std::vector<CheckResult>>& checks) {
   options.video_path.clear();
   options.png_directory.clear();
   options.png_frames.clear();
@@ -43,7 +43,7 @@ std::vector<Still> render_stills(const Scene& scene, RenderOptions options, cons
   options.on_still = [&stills](double time, const render::Frame& frame, const std::vector<BodyPose>& poses) {
     stills.push_back({time, frame, poses});
   };
-  checks = render_scene(scene, options);
+  checks = render_panes(panes, options);
   return stills;
 }
 
@@ -156,10 +156,11 @@ MomentReport compare_still(const std::string& directory, const Still& still, con
   return report;
 }
 
-VerifyResult update_goldens(const Scene& scene, const RenderOptions& options, const VerifyOptions& verify) {
+VerifyResult update_goldens(const std::vector<Pane>& panes, const RenderOptions& options, const VerifyOptions& verify) {
+  const Scene& scene = *panes.front().scene;
   VerifyResult result;
   const bool defaults = verify.moments.empty();
-  const std::vector<Still> stills = render_stills(scene, options, defaults ? default_moments(scene) : verify.moments,
+  const std::vector<Still> stills = render_stills(panes, options, defaults ? default_moments(scene) : verify.moments,
                                                   defaults && scene.playback.slow_motion_impulse > 0, result.checks);
   fs::create_directories(verify.golden_directory);
   for (const Still& still : stills) {
@@ -174,8 +175,9 @@ VerifyResult update_goldens(const Scene& scene, const RenderOptions& options, co
 
 }  // namespace
 
-VerifyResult verify_scene(const Scene& scene, RenderOptions options, const VerifyOptions& verify) {
-  if (verify.update) return update_goldens(scene, options, verify);
+VerifyResult verify_scene(const std::vector<Pane>& panes, RenderOptions options, const VerifyOptions& verify) {
+  if (verify.update) return update_goldens(panes, options, verify);
+  const Scene& scene = *panes.front().scene;
   const GoldenManifest manifest = read_manifest(verify.golden_directory);
   std::vector<double> moments = verify.moments.empty() ? manifest.moments : verify.moments;
   for (const double moment : moments)
@@ -190,7 +192,7 @@ VerifyResult verify_scene(const Scene& scene, RenderOptions options, const Verif
                                   moment_name(scene.duration).substr(2) + " s): record the goldens again with --update");
 
   VerifyResult result;
-  const std::vector<Still> stills = render_stills(scene, options, moments, false, result.checks);
+  const std::vector<Still> stills = render_stills(panes, options, moments, false, result.checks);
   GoldenManifest now = manifest;
   now.width = scene.video.width, now.height = scene.video.height, now.fps = scene.video.fps;
   now.quality = quality_name(now.width, now.height, now.fps);

@@ -33,11 +33,12 @@ struct VerifyResult {
   std::vector<std::string> lines;  // one per moment (and per body that moved): matches, DIFFERS, wrote
   bool passed = true;
   std::string report_path;          // DIR/report.html; empty with update
-  std::vector<CheckResult> checks;  // the scene's [[check]]s, from the same run
+  std::vector<std::vector<CheckResult>> checks;  // each pane's [[check]]s, from the same run
 };
 
-// Throws std::invalid_argument when there is nothing to compare with (no manifest, a moment
-// without golden), render::OutputError when a file cannot be written.
-VerifyResult verify_scene(const Scene& scene, RenderOptions options, const VerifyOptions& verify);
+// `panes`: the scene alone, or a comparison's panes (the poses are the first pane's). Throws
+// std::invalid_argument when there is nothing to compare with (no manifest, a moment without
+// golden), render::OutputError when a file cannot be written.
+VerifyResult verify_scene(const std::vector<Pane>& panes, RenderOptions options, const VerifyOptions& verify);
 
 }  // namespace impulse::demos

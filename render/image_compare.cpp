@@ -7,7 +7,7 @@
 namespace impulse::render {
 namespace {
 
-constexpr double kLargestDelta = 35215.0;  // the YIQ delta of black against white, below
+constexpr double kLargestDelta = 35215.0;  // the largest YIQ delta of two colours, below (pixelmatch's)
 
 double luma(const uint8_t* p) { return p[0] * 0.29889531 + p[1] * 0.58662247 + p[2] * 0.11448223; }
 double in_phase(const uint8_t* p) { return p[0] * 0.59597799 - p[1] * 0.27417610 - p[2] * 0.32180189; }
@@ -102,17 +102,17 @@ void find_largest_region(ImageDifference& difference) {
 }
 
 std::string summarise(const ImageDifference& difference, const ImageTolerance& tolerance) {
-  char text[320];
+  char text[400];
   if (difference.differing_pixels == 0) {
-    std::snprintf(text, sizeof text, "no pixel differs (YIQ distance over %.2f; %d anti-aliased edge pixels do)",
+    std::snprintf(text, sizeof text, "no pixel differs (YIQ distance over %.2f); %d anti-aliased edge pixels forgiven",
                   tolerance.colour_threshold, difference.anti_aliased_pixels);
   } else {
     std::snprintf(text, sizeof text,
                   "largest region of differing pixels %d (allowed: %d), in x %d..%d, y %d..%d; %d pixels differ in all, "
-                  "%.3f %% of the frame (allowed: %.3f %%)",
+                  "%.3f %% of the frame (allowed: %.3f %%); %d anti-aliased edge pixels forgiven",
                   difference.largest_region, tolerance.max_region_pixels, difference.left, difference.right,
                   difference.top, difference.bottom, difference.differing_pixels, 100 * difference.differing_share,
-                  100 * tolerance.max_differing_share);
+                  100 * tolerance.max_differing_share, difference.anti_aliased_pixels);
   }
   return text;
 }

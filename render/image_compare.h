@@ -1,7 +1,7 @@
 // Two frames compared as pixelmatch compares screenshots (mapbox/pixelmatch, what Playwright's
 // screenshot tests use), written here in C++:
 // - a pixel differs when its perceptual colour distance (in YIQ, the NTSC colour space; 0 same,
-//   1 black against white) is above `colour_threshold`, and it is not an anti-aliased edge pixel
+//   1 the farthest two colours can be, black against white 0.97) is above `colour_threshold`, and it is not an anti-aliased edge pixel
 //   (a pixel between a darker and a brighter neighbour of which one is flat in both frames: an edge
 //   drawn a hair to the side, as llvmpipe's vector widths and CPUs do);
 // - the frames differ when the differing pixels touching each other (8 neighbours) form a region
@@ -42,7 +42,7 @@ struct ImageDifference {
 
 ImageDifference compare_images(const Frame& expected, const Frame& actual, ImageTolerance tolerance = {});
 
-// YIQ distance of two RGB colours, 0 (same) .. 1 (black against white).
+// YIQ distance of two RGB colours, 0 (same) .. 1 (the farthest two can be; black and white: 0.97).
 double colour_distance(const uint8_t* a, const uint8_t* b);
 
 // The larger of the two frames' sizes: `expected` faded towards white, differing pixels red,

@@ -2,6 +2,8 @@
 // perceptual distance, anti-aliased edges forgiven, and regions of differing pixels counted.
 #include "render/image_compare.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 namespace impulse {
@@ -31,9 +33,11 @@ Frame edge_frame(int edge, uint8_t edge_grey) {
   return frame;
 }
 
-TEST(ImageCompare, BlackAgainstWhiteIsTheWholeScale) {
+TEST(ImageCompare, BlackAgainstWhiteIsNearlyTheWholeScale) {
   const uint8_t black[3] = {0, 0, 0}, white[3] = {255, 255, 255}, grey[3] = {128, 128, 128};
-  EXPECT_NEAR(render::colour_distance(black, white), 1.0, 1e-3);
+  EXPECT_NEAR(render::colour_distance(black, white), std::sqrt(0.5053 * 255 * 255 / 35215), 1e-6);  // luma only
+  const uint8_t blue[3] = {0, 0, 255}, yellow[3] = {255, 255, 0};
+  EXPECT_LE(render::colour_distance(blue, yellow), 1.0);
   EXPECT_EQ(render::colour_distance(grey, grey), 0.0);
   const uint8_t near_grey[3] = {131, 128, 126};
   EXPECT_LT(render::colour_distance(grey, near_grey), 0.1);

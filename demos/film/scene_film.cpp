@@ -1,5 +1,7 @@
 #include "demos/film/scene_film.h"
 
+#include "demos/film/moments.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -114,8 +116,8 @@ void SceneFilm::shoot(const std::vector<SceneFilm*>& films, const Shots& shots) 
     time = next;
   }
   if (!stills.empty())
-    throw std::invalid_argument("a moment asked for is outside the scene (0 .. " + std::to_string(first.duration) +
-                                " s): " + std::to_string(stills.front()) + " s");
+    throw std::invalid_argument("a still at t = " + moment_name(stills.front()).substr(2) + " s is past the scene's end (" +
+                                moment_name(first.duration).substr(2) + " s): --at takes moments from 0 to the duration");
   for (SceneFilm* film : films)
     while (!film->take_.finished()) film->take_.step();  // the summary covers the whole duration
 }

@@ -3,8 +3,9 @@
 # measurement: every catalogue scene's default moments recorded with llvmpipe as it comes, then
 # rendered again at other vector widths and CPU capabilities (which must pass), and changes a
 # course must see (which must fail). One line per moment compared:
-#   QUALITY SCENE CASE t=SECONDS REGION SHARE%
-# REGION is the largest connected region of differing pixels, SHARE the differing pixels' share.
+#   QUALITY SCENE CASE t=SECONDS REGION SHARE% EDGES VERDICT
+# REGION is the largest connected region of differing pixels, SHARE the differing pixels' share of
+# the frame, EDGES the anti-aliased edge pixels forgiven; VERDICT matches or DIFFERS.
 # Usage: tests/bench/verify_tolerance.sh build/demos/impulse OUT_DIR [low medium high] > table.txt
 set -uo pipefail
 impulse=$(realpath "$1"); out=$2; shift 2
@@ -14,11 +15,12 @@ cd "$(dirname "$0")/../.."
 # Prints the moments of one verify run as table rows.
 rows() {  # quality scene case -- verify arguments...
   local quality=$1 scene=$2 case=$3; shift 4
-  "$@" 2>&1 | sed -n 's/.*t = \([0-9.]*\) s \(matches\|DIFFERS\).*/\1 \0/p' |
-    while read -r time line; do
+  "$@" 2>&1 | sed -n 's/.*t = \([0-9.]*\) s \(matches\|DIFFERS\).*/\1 \2 \0/p' |
+    while read -r time verdict line; do
       region=$(sed -n 's/.*largest region of differing pixels \([0-9]*\).*/\1/p' <<<"$line")
       share=$(sed -n 's/.* \([0-9.]*\) % of the frame.*/\1/p' <<<"$line")
-      echo "$quality $scene $case t=$time ${region:-0} ${share:-0}"
+      edges=$(sed -n 's/.* \([0-9]*\) anti-aliased edge pixels forgiven.*/\1/p' <<<"$line")
+      echo "$quality $scene $case t=$time ${region:-0} ${share:-0} ${edges:-0} $verdict"
     done
 }
 
