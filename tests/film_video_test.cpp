@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -163,8 +164,16 @@ TEST(RenderVideo, ThePosterIsTheMiddleFrameWithoutImpacts) {
   const render::Frame poster = render::read_png((dir / "fall.png").string());
   const testing::DecodedVideo video = testing::decode_video(options.video_path);
   ASSERT_EQ(video.frames.size(), 30u);
-  EXPECT_TRUE(render::compare_images(video.frames[15], poster).matches);
-  EXPECT_FALSE(render::compare_images(video.frames[0], poster).matches);
+  // The decoded frames went through H.264 (yuv420p halves the colour planes): the poster is the
+  // frame that differs from it least, by far.
+  std::vector<int> differing;
+  for (const render::Frame& frame : video.frames) differing.push_back(render::compare_images(frame, poster).differing_pixels);
+  const auto closest = std::min_element(differing.begin(), differing.end());
+  EXPECT_EQ(closest - differing.begin(), 15) << ::testing::PrintToString(differing);
+  for (size_t i = 0; i < differing.size(); ++i) {
+    if (i == 15) continue;
+    EXPECT_GT(differing[i], 4 * differing[15] + 50) << "frame " << i << ": " << ::testing::PrintToString(differing);
+  }
 }
 
 }  // namespace
