@@ -6,6 +6,7 @@
 #include "demos/program.h"
 #include "demos/simulate.h"
 #include "demos/verify.h"
+#include "render/image_compare.h"
 
 #include <CLI/CLI.hpp>
 
@@ -94,6 +95,33 @@ void add_video_options(CLI::App* command, VideoOverrides& overrides) {
 }
 
 }  // namespace
+
+// verify's --help footer, with the tolerances it uses.
+std::string verify_help() {
+  const render::ImageTolerance tolerance;
+  char text[2400];
+  std::snprintf(
+      text, sizeof text,
+      "\nMoments are seconds of simulated time, so goldens survive a change of frame rate. By default --update\n"
+      "records the start, the middle, the end and each impact that slows the video; a later run compares the\n"
+      "moments the goldens' manifest.toml lists (size, frame rate, quality, drawing options, --set, program).\n"
+      "\nA pixel differs when its perceptual (YIQ) colour distance is over %.2f and it is not an anti-aliased\n"
+      "edge; a still differs when a connected region of more than %d such pixels, or more than %.2f %% of\n"
+      "the frame, differs. A body differs when it is more than %g m from its recorded position or turned\n"
+      "more than %g rad (poses.csv). A still that differs gets t_0.500.actual.png, .diff.png and .strip.png\n"
+      "(golden | actual | diff) beside its golden; DIR/report.html shows every moment.\n"
+      "\nExamples:\n"
+      "  impulse verify course/drop.toml --golden course/golden/drop --quality low --update   # record\n"
+      "  impulse verify course/drop.toml --golden course/golden/drop --quality low            # compare\n"
+      "  impulse verify scene.toml --golden golden/ --at 0.5,1,2 --update                    # chosen moments\n"
+      "\nExit codes: 0 every still and pose matches (or the goldens were written); 1 the scene file or the\n"
+      "command line is wrong, or there is nothing to compare with (no manifest, a moment without golden);\n"
+      "2 a still or a body's pose differs, or the size is not the goldens' (it says what to re-run), or a\n"
+      "[[check]] of the scene failed; 3 a file cannot be written; 4 anything else failed.",
+      tolerance.colour_threshold, tolerance.max_region_pixels, 100 * tolerance.max_differing_share, demos::kPoseMetres,
+      demos::kPoseRadians);
+  return text;
+}
 
 constexpr const char* kExitCodes =
     "\nExit codes: 0 done; 1 the scene file or the command line is wrong (nothing written); 2 a [[check]]\n"
@@ -210,24 +238,7 @@ int main(int argc, char** argv) {
   add_set_option(simulate, simulate_settings);
 
   auto* verify = app.add_subcommand("verify", "Render stills at chosen moments and compare them, and every body's pose, with goldens");
-  verify->footer(std::string(
-                     "\nMoments are seconds of simulated time, so goldens survive a change of frame rate. By default\n"
-                     "--update records the start, the middle, the end and each impact that slows the video, and a\n"
-                     "later run compares the moments the goldens' manifest.toml lists.\n"
-                     "\nA pixel differs when its perceptual (YIQ) colour distance is over 0.1 and it is not an anti-aliased\n"
-                     "edge; a still differs when a connected region of more than 12 such pixels, or more than 0.05 % of\n"
-                     "the frame, differs. A body differs when it is more than 1 mm from its recorded position or turned\n"
-                     "more than 1 mrad. A still that differs gets t_0.500.actual.png, .diff.png and .strip.png (golden |\n"
-                     "actual | diff) beside its golden; DIR/report.html shows every moment.\n"
-                     "\nExamples:\n"
-                     "  impulse verify my_course/drop.toml --golden my_course/golden/drop --quality low --update  # record\n"
-                     "  impulse verify my_course/drop.toml --golden my_course/golden/drop --quality low           # compare\n"
-                     "  impulse verify scene.toml --golden golden/ --at 0.5,1,2 --update\n"
-                     "\nExit codes: 0 every still and pose matches (or the goldens were written); 1 the scene file or the\n"
-                     "command line is wrong, or there is nothing to compare with (no manifest, a moment without golden);\n"
-                     "2 a still or a body's pose differs, or the size is not the goldens' (the report says what to re-run),\n"
-                     "or a [[check]] of the scene failed; 3 a file cannot be written; 4 anything else failed.") +
-                 "");
+  verify->footer(verify_help());
   demos::VerifyOptions verify_options;
   std::string verify_moments;
   VideoOverrides verify_overrides;
