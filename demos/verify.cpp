@@ -200,6 +200,15 @@ VerifyResult verify_scene(const std::vector<Pane>& panes, RenderOptions options,
   const std::string size_note = "the goldens are " + describe_size(manifest) + ", this run " + describe_size(now) +
                                 ": re-run with " + size_options(manifest) + ", or with --update to record new goldens";
   if (!same_size) result.lines.push_back(size_note);
+  if (verify.settings != manifest.settings) {  // allowed (that is how a change is tried), but said
+    auto listed = [](const std::vector<std::string>& settings) {
+      std::string text;
+      for (const std::string& setting : settings) text += " --set " + setting;
+      return text.empty() ? std::string(" no --set") : text;
+    };
+    result.lines.push_back("note: the goldens were recorded with" + listed(manifest.settings) + ", this run has" +
+                           listed(verify.settings));
+  }
   const physics::World world = build_world(scene);
   std::vector<MomentReport> reports;
   for (const Still& still : stills) {
