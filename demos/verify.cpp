@@ -209,6 +209,7 @@ VerifyResult verify_scene(const std::vector<Pane>& panes, RenderOptions options,
     result.lines.push_back("note: the goldens were recorded with" + listed(manifest.settings) + ", this run has" +
                            listed(verify.settings));
   }
+  const size_t notes_end = result.lines.size();  // the lines so far are about the whole run
   const physics::World world = build_world(scene);
   std::vector<MomentReport> reports;
   for (const Still& still : stills) {
@@ -218,9 +219,10 @@ VerifyResult verify_scene(const std::vector<Pane>& panes, RenderOptions options,
   }
   result.passed = result.passed && same_size;
   result.report_path = (fs::path(verify.golden_directory) / "report.html").string();
-  write_report(result.report_path, verify.scene_path, manifest, same_size ? "" : size_note, reports);
-  result.lines.push_back(std::string(result.passed ? "all " : "") + std::to_string(reports.size()) + " moments compared" +
-                         (result.passed ? " match" : "; report: " + result.report_path));
+  const std::vector<std::string> notes(result.lines.begin(), result.lines.begin() + notes_end);
+  write_report(result.report_path, verify.scene_path, manifest, result.passed, notes, reports);
+  result.lines.push_back((result.passed ? "passed: " : "FAILED: ") + std::to_string(reports.size()) +
+                         " moments compared; report: " + result.report_path);
   return result;
 }
 

@@ -48,8 +48,8 @@ void write_moment(std::ofstream& page, const std::string& path, const MomentRepo
 
 }  // namespace
 
-void write_report(const std::string& path, const std::string& scene_path, const GoldenManifest& manifest,
-                  const std::string& note, const std::vector<MomentReport>& moments) {
+void write_report(const std::string& path, const std::string& scene_path, const GoldenManifest& manifest, bool passed,
+                  const std::vector<std::string>& notes, const std::vector<MomentReport>& moments) {
   int failed = 0;
   for (const MomentReport& moment : moments) failed += !moment.passed;
   render::PartFile part(path);
@@ -59,9 +59,9 @@ void write_report(const std::string& path, const std::string& scene_path, const 
          << escaped(scene_path) << "</title>\n<style>body{font-family:sans-serif;margin:2em;max-width:100%}"
          << ".pass h2{color:#009E73}.fail h2{color:#D55E00}img{max-width:100%}img.small{max-width:320px}"
          << "td{padding:0 1em 0 0}</style></head><body>\n<h1>impulse verify: " << escaped(scene_path) << "</h1>\n"
-         << "<p><b>" << (failed == 0 && note.empty() ? "passed" : "FAILED") << "</b>: " << moments.size() - failed << " of "
+         << "<p><b>" << (passed ? "passed" : "FAILED") << "</b>: " << moments.size() - failed << " of "
          << moments.size() << " moments match.</p>\n";
-    if (!note.empty()) page << "<p><b>" << escaped(note) << "</b></p>\n";
+    for (const std::string& note : notes) page << "<p><b>" << escaped(note) << "</b></p>\n";
     page << "<table><tr><td>goldens</td><td>" << escaped(describe_size(manifest)) << ", samples " << manifest.samples
          << ", spheres " << escaped(manifest.spheres) << ", shadows " << escaped(manifest.shadows) << "</td></tr>\n"
          << "<tr><td>recorded by</td><td>" << escaped(manifest.program) << " from " << escaped(manifest.scene) << "</td></tr>\n"

@@ -15,9 +15,9 @@ struct MomentReport {
   std::string golden, actual, diff, strip;  // paths of the images; empty: none
 };
 
-// `note`: said above the moments (e.g. that the sizes differ); empty: nothing. Throws
+// `notes`: said above the moments (that the sizes differ, that --set differs). Throws
 // render::OutputError when the file cannot be written.
-void write_report(const std::string& path, const std::string& scene_path, const GoldenManifest& manifest,
-                  const std::string& note, const std::vector<MomentReport>& moments);
+void write_report(const std::string& path, const std::string& scene_path, const GoldenManifest& manifest, bool passed,
+                  const std::vector<std::string>& notes, const std::vector<MomentReport>& moments);
 
 }  // namespace impulse::demos
