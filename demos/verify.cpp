@@ -179,7 +179,7 @@ VerifyResult verify_scene(const std::vector<Pane>& panes, RenderOptions options,
   if (verify.update) return update_goldens(panes, options, verify);
   const Scene& scene = *panes.front().scene;
   const GoldenManifest manifest = read_manifest(verify.golden_directory);
-  std::vector<double> moments = verify.moments.empty() ? manifest.moments : verify.moments;
+  const std::vector<double> moments = verify.moments.empty() ? manifest.moments : verify.moments;
   for (const double moment : moments)
     if (std::none_of(manifest.moments.begin(), manifest.moments.end(),
                      [&](double recorded) { return moment_key(recorded) == moment_key(moment); }))

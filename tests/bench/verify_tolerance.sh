@@ -7,6 +7,8 @@
 # REGION is the largest connected region of differing pixels, SHARE the differing pixels' share of
 # the frame, EDGES the anti-aliased edge pixels forgiven; VERDICT matches or DIFFERS.
 # Usage: tests/bench/verify_tolerance.sh build/demos/impulse OUT_DIR [low medium high] > table.txt
+# (SCENES='assets/scenes/ex5*.toml' to measure only some scenes.) GALLIUM_OVERRIDE_CPU_CAPS=nosse is
+# llvmpipe without any SIMD, which no x86-64 CPU is; sse2 renders the same bytes as sse4.1.
 set -uo pipefail
 impulse=$(realpath "$1"); out=$2; shift 2
 qualities=${*:-low medium high}
@@ -25,7 +27,7 @@ rows() {  # quality scene case -- verify arguments...
 }
 
 for quality in $qualities; do
-  for path in assets/scenes/*.toml; do
+  for path in ${SCENES:-assets/scenes/*.toml}; do
     scene=$(basename "$path" .toml)
     golden=$out/$quality/$scene
     env -u LP_NATIVE_VECTOR_WIDTH -u GALLIUM_OVERRIDE_CPU_CAPS "$impulse" -q verify "$path" --golden "$golden" \
