@@ -7,6 +7,11 @@
 #include <stdexcept>
 
 namespace impulse::demos {
+namespace {
+
+constexpr double kLatestMoment = 1e7;  // s: far past any scene (a scene is at most hours), and whole ms fit a long long
+
+}  // namespace
 
 std::vector<double> parse_moments(const std::string& list, const std::string& option) {
   std::vector<double> moments;
@@ -20,7 +25,7 @@ std::vector<double> parse_moments(const std::string& list, const std::string& op
     } catch (const std::exception&) {
       used = 0;
     }
-    if (item.empty() || used != item.size() || !std::isfinite(seconds) || seconds < 0)
+    if (item.empty() || used != item.size() || !std::isfinite(seconds) || seconds < 0 || seconds > kLatestMoment)
       throw std::invalid_argument(option + " wants moments in seconds of simulated time from 0, separated by commas "
                                   "(like 0.5,1,2), got '" + list + "'");
     moments.push_back(double(moment_key(seconds)) / 1000);
