@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "demos/film/moments.h"
 #include "render/png_io.h"
 #include "tests/child_process.h"
 
@@ -162,6 +163,16 @@ TEST(Verify, RefusesNothingToCompareWith) {
   const testing::ChildResult bad = goldens.verify({"--at", "0.5,x"});
   EXPECT_EQ(bad.exit_code, 1) << bad.describe();
   EXPECT_TRUE(has(bad, "--at wants moments in seconds")) << bad.stderr_text;
+}
+
+// Moments to the millisecond, sorted, once each; anything else refused naming the option.
+TEST(Verify, MomentsAreParsedToTheMillisecond) {
+  EXPECT_EQ(demos::parse_moments("2,0.5,0.5004,1"), (std::vector<double>{0.5, 1, 2}));
+  EXPECT_EQ(demos::moment_name(0.4166), "t_0.417");
+  EXPECT_EQ(demos::moment_name(12), "t_12.000");
+  for (const char* bad : {"", "0.5,", "-1", "x", "1e300", "nan", "0.5 "}) {
+    EXPECT_THROW(demos::parse_moments(bad, "--at"), std::invalid_argument) << "'" << bad << "'";
+  }
 }
 
 // render --png takes moments too, parsed as verify parses them, beside frame numbers.

@@ -15,7 +15,7 @@ constexpr double kLatestMoment = 1e7;  // s: far past any scene (a scene is at m
 
 std::vector<double> parse_moments(const std::string& list, const std::string& option) {
   std::vector<double> moments;
-  std::stringstream stream(list);
+  std::stringstream stream(list + (list.empty() || list.back() == ',' ? "," : ""));  // an empty last item refused too
   std::string item;
   while (std::getline(stream, item, ',')) {
     size_t used = 0;
