@@ -14,14 +14,6 @@
 namespace fs = std::filesystem;
 
 namespace impulse::demos {
-namespace {
-// The panes of a comparison: one scene per value of --vary or of the file's [compare], or one per
-// scene file. Every pane gets the first's camera, video, playback and duration.
-struct Comparison {
-  std::vector<std::string> paths;      // the scene file of each pane
-  std::vector<demos::Scene> scenes;
-  std::vector<demos::Pane> panes;
-};
 
 Comparison load_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
                            const VideoOverrides& overrides, demos::RenderOptions& options) {
@@ -62,7 +54,16 @@ Comparison load_comparison(const std::vector<std::string>& scene_paths, const st
   return comparison;
 }
 
-}  // namespace
+Comparison load_panes(const std::string& scene_path, const VideoOverrides& overrides, demos::RenderOptions& options) {
+  demos::Scene scene = load(scene_path, overrides.settings);
+  if (!scene.compare.values.empty()) return load_comparison({scene_path}, "", overrides, options);
+  Comparison alone;
+  overrides.apply(scene, options);
+  alone.scenes.push_back(std::move(scene));
+  alone.paths = {scene_path};
+  alone.panes = {{&alone.scenes.front(), ""}};
+  return alone;
+}
 
 demos::Scene load(const std::string& scene_path, const std::vector<std::string>& settings) {
   demos::Scene scene = demos::load_scene(scene_path, settings);

@@ -55,6 +55,19 @@ struct VideoOverrides {
   }
 };
 
+// The panes of a comparison: one scene per value of --vary or of the file's [compare], or one per
+// scene file. Every pane gets the first's camera, video, playback and duration, and the first
+// scene the command line's video options. A pane points into `scenes`.
+struct Comparison {
+  std::vector<std::string> paths;      // the scene file of each pane
+  std::vector<demos::Scene> scenes;
+  std::vector<demos::Pane> panes;
+};
+Comparison load_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
+                           const VideoOverrides& overrides, demos::RenderOptions& options);
+// One scene file as it renders: its [compare]'s panes, or itself alone in one pane.
+Comparison load_panes(const std::string& scene_path, const VideoOverrides& overrides, demos::RenderOptions& options);
+
 // The scene with the --set settings over it; what is odd but allowed is said on stderr.
 Scene load(const std::string& scene_path, const std::vector<std::string>& settings);
 

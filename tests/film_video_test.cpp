@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -174,13 +175,26 @@ PosterRun render_fall_with_poster(const std::string& name, const std::string& ov
   return run;
 }
 
+// Which frame of the video the poster is. The decoded frames went through H.264 (yuv420p halves
+// the colour planes): the poster is the frame that differs from it least, by far (-1 if none is).
+int poster_frame_of(const PosterRun& run) {
+  std::vector<int> differing;
+  for (const render::Frame& frame : run.video.frames) differing.push_back(render::compare_images(frame, run.poster).differing_pixels);
+  const int closest = int(std::min_element(differing.begin(), differing.end()) - differing.begin());
+  for (size_t i = 0; i < differing.size(); ++i)
+    if (int(i) != closest && !(differing[i] > 4 * differing[closest] + 50)) {
+      ADD_FAILURE() << "frames " << i << " and " << closest << " are both close: " << ::testing::PrintToString(differing);
+      return -1;
+    }
+  return closest;
+}
+
 // The poster beside a video is one of its frames: with no impulse labelled or drawn and no impact
 // to slow the video, the middle one.
 TEST(RenderVideo, ThePosterIsTheMiddleFrameWithNothingToShow) {
   const PosterRun run = render_fall_with_poster("poster_middle", "label = \"none\"\n", "");
   ASSERT_EQ(run.video.frames.size(), 30u);
-  EXPECT_TRUE(render::compare_images(run.video.frames[15], run.poster).matches);
-  EXPECT_FALSE(render::compare_images(run.video.frames[0], run.poster).matches);
+  EXPECT_EQ(poster_frame_of(run), 15);
 }
 
 // By default the poster shows the largest labelled impulse: the first frame after the landing.
@@ -188,8 +202,7 @@ TEST(RenderVideo, ThePosterShowsTheLargestLabelledImpulse) {
   const PosterRun run = render_fall_with_poster("poster_impulse", "", "");
   ASSERT_EQ(run.video.frames.size(), 30u);
   const int landing = int(std::ceil(std::sqrt(2 * 2.0 / 9.81) * 30));  // 0.639 s: frame 20
-  EXPECT_TRUE(render::compare_images(run.video.frames[landing], run.poster).matches);
-  EXPECT_FALSE(render::compare_images(run.video.frames[15], run.poster).matches);
+  EXPECT_EQ(poster_frame_of(run), landing);
 }
 
 // [playback] poster chooses the moment, and a caption fading there moves the poster to the nearest
@@ -200,8 +213,7 @@ TEST(RenderVideo, AChosenPosterMomentAvoidsAFadingCaption) {
       "poster_chosen", "label = \"none\"\n",
       "[playback]\nposter = 0.55\n[[caption]]\ntext = \"Falling\"\nstart = 0.5\nend = 1.0\n");
   ASSERT_EQ(run.video.frames.size(), 30u);
-  EXPECT_TRUE(render::compare_images(run.video.frames[18], run.poster).matches);
-  EXPECT_FALSE(render::compare_images(run.video.frames[17], run.poster).matches);
+  EXPECT_EQ(poster_frame_of(run), 18);
 }
 
 }  // namespace

@@ -49,13 +49,13 @@ render::Colour pane_colour(int pane) {
   return colours[pane % 4];
 }
 
-Film::Film(const std::vector<Pane>& panes, int width, int height) : panes_(panes), frame_height_(height) {
+Film::Film(const std::vector<Pane>& panes, int width, int height, const Shots& shots) : panes_(panes), frame_height_(height) {
   if (panes.empty() || panes.size() > 4) throw std::invalid_argument("a video shows one to four scenes");
   const Scene& first = *panes.front().scene;
   layout_ = pane_layout(int(panes.size()), width, height, !first.overlay.plots.empty());
   std::vector<const Scene*> scenes;
   for (const Pane& pane : panes) scenes.push_back(pane.scene);
-  films_ = SceneFilm::together(scenes, layout_.width, layout_.height);
+  films_ = SceneFilm::together(scenes, layout_.width, layout_.height, shots);
   pictures_.resize(panes.size());
 }
 
@@ -85,6 +85,9 @@ void Film::next(FilmPicture& picture) {
     films_[i]->next(pictures_[i]);
     picture.panes[i] = std::move(pictures_[i].draw_list);
   }
+  picture.frame = pictures_.front().frame;
+  picture.time = pictures_.front().time;
+  picture.poses = std::move(pictures_.front().poses);
   if (films_.size() == 1) {
     picture.overlay = std::move(pictures_.front().overlay);
   } else {

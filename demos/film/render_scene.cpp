@@ -1,6 +1,7 @@
 #include "demos/film/render_scene.h"
 
 #include "demos/film/marks.h"
+#include "demos/film/moments.h"
 #include "demos/film/render_types.h"
 #include "demos/film/scene_draw_list.h"
 #include "demos/film/film.h"
@@ -36,8 +37,8 @@ bool wants_png(const RenderOptions& options, int64_t index, int frame_count) {
       if (index == int64_t(k) * (frame_count - 1) / (options.png_spread - 1)) return true;
     return false;
   }
-  return options.png_frames.empty() ||
-         std::find(options.png_frames.begin(), options.png_frames.end(), index) != options.png_frames.end();
+  if (options.png_frames.empty()) return options.moments.empty() && !options.moments_at_impacts;  // all, unless stills
+  return std::find(options.png_frames.begin(), options.png_frames.end(), index) != options.png_frames.end();
 }
 
 }  // namespace
@@ -138,6 +139,10 @@ std::string frame_file(const std::string& directory, int64_t index) {
   return (std::filesystem::path(directory) / name).string();
 }
 
+std::string still_file(const std::string& directory, double time) {
+  return (std::filesystem::path(directory) / (moment_name(time) + ".png")).string();
+}
+
 render::DrawList make_draw_list(const Scene& scene, const physics::World& world, const physics::StepRecord& record) {
   return scene_draw_list(scene, world.bodies(), poses_of(world.bodies()), world.joints(), record.contacts,
                          arrow_scales(scene, TakeSummary{}), to_render(scene.camera));
@@ -173,7 +178,14 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   // The output first: a path that cannot be written is refused before any simulation.
   std::unique_ptr<render::VideoEncoder> encoder;
   if (!options.video_path.empty()) encoder = std::make_unique<render::VideoEncoder>(options.video_path, video);
-  Film film(panes, video.width, video.height);
+  Shots shots;
+  shots.stills = options.moments;
+  shots.stills_at_impacts = options.moments_at_impacts;
+  const bool stills_only = !shots.stills.empty() || shots.stills_at_impacts;
+  shots.video_frames = encoder || !options.poster_path.empty() ||
+                       (!options.png_directory.empty() && (!stills_only || !options.png_frames.empty() || options.png_spread > 1));
+  // (without a video, poster or frame PNGs, the frames are simulated but not drawn)
+  Film film(panes, video.width, video.height, shots);
   const PaneLayout& layout = film.layout();
   render::Renderer renderer(layout.width, layout.height, options.renderer);
   if (!options.png_directory.empty()) std::filesystem::create_directories(options.png_directory);
@@ -186,8 +198,15 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   render::Frame poster_frame;  // kept until the video is complete: a poster only ever sits beside its video
   FramePipeline pipeline(kFramesInFlight, [&](FrameJob& job) {
     painter.paint(job.overlay, job.frame);
-    if (wants_png(options, job.index, film.frame_count())) render::write_png(frame_file(options.png_directory, job.index), job.frame);
-    if (!options.poster_path.empty() && job.index == poster) poster_frame = job.frame;
+    if (job.video_frame < 0) {  // a still
+      if (!options.png_directory.empty()) render::write_png(still_file(options.png_directory, job.time), job.frame);
+      if (options.on_still) options.on_still(job.time, job.frame, job.poses);
+      ++frames_finished;
+      return;
+    }
+    if (wants_png(options, job.video_frame, film.frame_count()))
+      render::write_png(frame_file(options.png_directory, job.video_frame), job.frame);
+    if (!options.poster_path.empty() && job.video_frame == poster) poster_frame = job.frame;
     if (encoder) encoder->add_frame(job.frame);
     ++frames_finished;
   });
@@ -195,7 +214,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   HandoffQueue<FilmPicture> pictures(kPicturesAhead);
   std::thread simulation([&] {
     try {
-      while (film.next_frame() < film.frame_count()) {
+      while (film.next_frame() < film.picture_count()) {
         FilmPicture picture;
         film.next(picture);
         if (!pictures.push(std::move(picture))) return;  // the drawing stopped
@@ -228,8 +247,11 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
       }
     }
     job.overlay = std::move(picture->overlay);
+    job.video_frame = picture->frame;
+    job.time = picture->time;
+    job.poses = std::move(picture->poses);
     pipeline.submit();
-    if (options.progress) options.progress(frames_finished, film.frame_count());
+    if (options.progress) options.progress(frames_finished, film.picture_count());
   }
   pipeline.finish();
   if (encoder) encoder->finish();
