@@ -87,7 +87,28 @@ bool segment_meets(const Vec2f& a, const Vec2f& b, double x0, double y0, double 
   return true;
 }
 
-// Splits `text` at spaces into lines no wider than `max_width`.
+// Splits a word wider than `max_width` between characters (UTF-8 sequences kept whole) into
+// pieces that fit, each at least one character.
+std::vector<std::string> split_word(cairo_t* cr, const std::string& word, double max_width) {
+  std::vector<std::string> pieces;
+  std::string piece;
+  for (size_t i = 0; i < word.size();) {
+    size_t length = 1;  // the character at i: a lead byte, then its continuation bytes (10xxxxxx)
+    while (i + length < word.size() && (static_cast<unsigned char>(word[i + length]) & 0xC0) == 0x80) ++length;
+    const std::string character = word.substr(i, length);
+    if (!piece.empty() && text_width(cr, piece + character) > max_width) {
+      pieces.push_back(piece);
+      piece.clear();
+    }
+    piece += character;
+    i += length;
+  }
+  if (!piece.empty()) pieces.push_back(piece);
+  return pieces;
+}
+
+// Splits `text` at spaces into lines no wider than `max_width`; a word wider than that alone is
+// split between characters.
 std::vector<std::string> wrap(cairo_t* cr, const std::string& text, double max_width) {
   std::vector<std::string> lines;
   std::string line;
@@ -95,13 +116,16 @@ std::vector<std::string> wrap(cairo_t* cr, const std::string& text, double max_w
   while (start <= text.size()) {
     size_t end = text.find(' ', start);
     if (end == std::string::npos) end = text.size();
-    const std::string word = text.substr(start, end - start);
-    const std::string candidate = line.empty() ? word : line + " " + word;
-    if (!line.empty() && text_width(cr, candidate) > max_width) {
-      lines.push_back(line);
-      line = word;
-    } else {
-      line = candidate;
+    std::vector<std::string> words{text.substr(start, end - start)};
+    if (text_width(cr, words.front()) > max_width) words = split_word(cr, words.front(), max_width);
+    for (const std::string& word : words) {
+      const std::string candidate = line.empty() ? word : line + " " + word;
+      if (!line.empty() && text_width(cr, candidate) > max_width) {
+        lines.push_back(line);
+        line = word;
+      } else {
+        line = candidate;
+      }
     }
     start = end + 1;
   }

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <string>
 
 namespace impulse {
 namespace {
@@ -86,6 +88,46 @@ TEST(Overlay, LabelMovesOffTheArrowItWouldCover) {
   }
   EXPECT_GT(inked, 30) << "the label is written";
   EXPECT_EQ(inked_on_arrow, 0) << "and covers no part of the arrow";
+}
+
+// A word longer than the frame is wide, in a title or a caption, is split between characters: the
+// title's panel keeps to its column (clear of the clock's), the caption's box to the frame.
+TEST(Overlay, AWordWiderThanItsBoxIsSplitBetweenCharacters) {
+  const std::string word(300, 'W');
+  render::OverlayPainter painter(kWidth, kHeight);
+  render::Frame dark{kWidth, kHeight, std::vector<uint8_t>(size_t(kWidth) * kHeight * 4, 0)};
+  render::Overlay title;
+  title.title = word;
+  painter.paint(title, dark);
+  const double scale = kHeight / 720.0;
+  const int column_end = int(kWidth - 20 * scale - 330 * scale + 12 * scale * 2);  // the title's column and padding
+  int rightmost = -1, inked = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x)
+      if (dark.rgba[(size_t(y) * kWidth + x) * 4] > 100) {
+        rightmost = std::max(rightmost, x);
+        ++inked;
+      }
+  EXPECT_GT(inked, 1000) << "the title's panel, over several lines";
+  EXPECT_LE(rightmost, column_end);
+
+  render::Frame light{kWidth, kHeight, std::vector<uint8_t>(size_t(kWidth) * kHeight * 4, 255)};
+  render::Overlay caption;
+  caption.captions = {{word, 1.0f}};
+  painter.paint(caption, light);
+  int dark_rows = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    bool row_dark = false;
+    for (int x = 0; x < kWidth; ++x) {
+      const bool is_dark = light.rgba[(size_t(y) * kWidth + x) * 4] < 128;
+      row_dark |= is_dark;
+      if (x < 2 || x >= kWidth - 2) {
+        EXPECT_FALSE(is_dark) << "the caption's box reaches the frame's edge at y = " << y;
+      }
+    }
+    dark_rows += row_dark;
+  }
+  EXPECT_GT(dark_rows, 20) << "a box of several lines";
 }
 
 }  // namespace
