@@ -1,5 +1,6 @@
 #include "demos/gallery.h"
 
+#include "demos/html_text.h"
 #include "demos/film/render_scene.h"
 #include "demos/program.h"
 #include "demos/scene/scene_file.h"
@@ -19,20 +20,6 @@ namespace impulse::demos {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string html(const std::string& text) {
-  std::string escaped;
-  for (const char c : text) {
-    switch (c) {
-      case '&': escaped += "&amp;"; break;
-      case '<': escaped += "&lt;"; break;
-      case '>': escaped += "&gt;"; break;
-      case '"': escaped += "&quot;"; break;
-      default: escaped += c;
-    }
-  }
-  return escaped;
-}
 
 // The scene file's first comment lines, as one paragraph.
 std::string description_of(const fs::path& scene_file) {
