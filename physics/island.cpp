@@ -21,8 +21,8 @@ void Islands::join(int a, int b) {
 }
 
 void Islands::update(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
-                     const std::vector<std::pair<int, int>>& links, Real touching_distance, Real dt,
-                     const SleepSettings& settings) {
+                     const std::vector<std::pair<int, int>>& links, const std::vector<int>& anchored, bool friction,
+                     Real touching_distance, Real dt, const SleepSettings& settings) {
   const int n = int(bodies.size());
   island_of_.resize(n, -1);
   if (!settings.enabled) return;
@@ -43,13 +43,35 @@ void Islands::update(std::vector<Body>& bodies, const std::vector<Contact>& cont
   for (const auto& [a, b] : links)
     if (is_dynamic(bodies[a]) && is_dynamic(bodies[b])) join(a, b);
 
-  // An island sleeps when its most restless body has rested long enough.
+  // What holds each island: friction against a still body (static, or asleep), or a joint to the world.
+  std::vector<char> held(n, 0), moving(n, 0);
+  const auto still = [&](const Body& body) { return !is_dynamic(body) || !body.awake; };
+  if (friction) {
+    for (const Contact& c : contacts) {
+      const Body& a = bodies[c.body_a];
+      const Body& b = bodies[c.body_b];
+      if (c.separation >= touching_distance || !(a.material.friction > 0 && b.material.friction > 0)) continue;
+      if (still(b) && !still(a)) held[find(c.body_a)] = 1;
+      if (still(a) && !still(b)) held[find(c.body_b)] = 1;
+    }
+  }
+  for (const int i : anchored) held[find(i)] = 1;
+  for (const auto& [a, b] : links) {
+    if (!is_dynamic(bodies[a]) && is_dynamic(bodies[b])) held[find(b)] = 1;
+    if (!is_dynamic(bodies[b]) && is_dynamic(bodies[a])) held[find(a)] = 1;
+  }
+  // An island sleeps when its most restless body has rested long enough, and something holds it
+  // or it is exactly still.
   std::vector<Real> least_rest(n, INFINITY);
-  for (int i = 0; i < n; ++i)
-    if (is_dynamic(bodies[i]) && bodies[i].awake) least_rest[find(i)] = std::min(least_rest[find(i)], bodies[i].sleep_time);
+  for (int i = 0; i < n; ++i) {
+    if (!is_dynamic(bodies[i]) || !bodies[i].awake) continue;
+    least_rest[find(i)] = std::min(least_rest[find(i)], bodies[i].sleep_time);
+    if (bodies[i].velocity != Vec3::Zero() || bodies[i].angular_velocity != Vec3::Zero()) moving[find(i)] = 1;
+  }
   for (int i = 0; i < n; ++i) {
     Body& body = bodies[i];
     if (!is_dynamic(body) || !body.awake || least_rest[find(i)] < settings.time_to_sleep) continue;
+    if (!held[find(i)] && moving[find(i)]) continue;
     body.awake = false;
     body.velocity.setZero();
     body.angular_velocity.setZero();

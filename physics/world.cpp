@@ -26,6 +26,7 @@ int World::add_body(const BodyDef& def) {
 int World::add_joint(const JointDef& def) {
   joints_.push_back(make_joint(def, bodies_));
   if (def.body_a != kWorld && def.body_b != kWorld) links_.emplace_back(def.body_a, def.body_b);
+  else if (def.body_a != kWorld || def.body_b != kWorld) anchored_.push_back(def.body_a != kWorld ? def.body_a : def.body_b);
   return int(joints_.size()) - 1;
 }
 
@@ -48,7 +49,8 @@ void World::step() {
   }
 
   store_states();
-  islands_.update(bodies_, contacts_, links_, settings_.linear_slop, dt, settings_.sleep);
+  islands_.update(bodies_, contacts_, links_, anchored_, settings_.contact.friction, settings_.linear_slop, dt,
+                  settings_.sleep);
   time_ += dt;
   ++step_count_;
   check_finite();

@@ -98,6 +98,7 @@ class World {
   std::vector<Joint> joints_;
   JointSolver joint_solver_;
   std::vector<std::pair<int, int>> links_;  // body pairs joined by joints, for the islands
+  std::vector<int> anchored_;  // bodies jointed to the world: what holds their islands, for sleep
   ContactSolver contact_solver_;
   std::unique_ptr<ThreadTeam> team_;  // on the heap: the solver keeps its address, and World can move
   // The lowest index store_states() found not finite, or the body count. On the heap: World moves.

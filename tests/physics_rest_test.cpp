@@ -75,6 +75,42 @@ TEST(Sleep, ABallThrownAtASleepingBoxWakesItAndPushesIt) {
   EXPECT_GT(world.bodies()[box].position.x(), 0.1) << "m: the box was not pushed";
 }
 
+// Newton's first law with sleeping on: a body that nothing holds moves on however slowly it moves.
+// A ball drifting at 3 cm/s in zero gravity, and one sliding at 3 cm/s on a frictionless floor,
+// cover their 12 cm in 4 s.
+TEST(Sleep, ABodyNothingHoldsNeverSleeps) {
+  WorldSettings drifting;
+  drifting.gravity = Vec3::Zero();
+  World space(drifting);
+  const int drifter = add_sphere(space, Vec3::Zero(), 0.5, 1.0, Vec3(0.03, 0, 0));
+  World floor;
+  add_ground(floor, 0.0, 0.0);
+  const int slider = add_sphere(floor, Vec3(0, 0.5, 0), 0.5, 1.0, Vec3(0.03, 0, 0));
+  for (int i = 0; i < 4 * 60; ++i) {
+    space.step();
+    floor.step();
+  }
+  EXPECT_TRUE(space.bodies()[drifter].awake);
+  EXPECT_NEAR(space.bodies()[drifter].position.x(), 0.12, 1e-9);
+  EXPECT_TRUE(floor.bodies()[slider].awake);
+  EXPECT_NEAR(floor.bodies()[slider].position.x(), 0.12, 1e-4);
+}
+
+// What holds a body lets it sleep: a ball hanging still on a rod from a fixed point, with no floor.
+TEST(Sleep, ABallHangingStillFromTheWorldFallsAsleep) {
+  World world;
+  const int ball = add_sphere(world, Vec3(0, 1, 0), 0.2, 1.0);
+  JointDef rod;
+  rod.type = JointType::distance;
+  rod.body_a = kWorld;
+  rod.body_b = ball;
+  rod.anchor_a = Vec3(0, 2, 0);
+  rod.anchor_b = Vec3(0, 1, 0);
+  world.add_joint(rod);
+  for (int i = 0; i < 2 * 60; ++i) world.step();
+  EXPECT_FALSE(world.bodies()[ball].awake);
+}
+
 TEST(Sleep, OffKeepsEverythingAwake) {
   WorldSettings settings;
   settings.sleep.enabled = false;
