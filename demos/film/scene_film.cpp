@@ -45,6 +45,9 @@ void SceneFilm::develop(int width, int height, const TakeSummary& summary) {
   impact_times_ = summary.impact_times;
   scales_ = arrow_scales(scene_, summary);
   overlay_maker_.emplace(scene_, summary, scales_, width, height);
+  std::vector<const ImpactNumbers*> impacts;
+  for (const FrameSample& sample : samples_) impacts.push_back(&sample.impact);
+  overlay_maker_->prepare(impacts);
 }
 
 // Steps the worlds to their end, and samples each frame as soon as every world is far enough past

@@ -10,7 +10,7 @@ namespace {
 
 // The tables a scene file may have, and which of them are lists of tables.
 const std::vector<std::string> kTables = {"scene", "world", "camera", "video", "draw", "overlay", "playback", "compare"};
-const std::vector<std::string> kLists = {"body", "joint", "caption", "pyramid", "lattice", "check"};
+const std::vector<std::string> kLists = {"body", "joint", "caption", "equation", "pyramid", "lattice", "check"};
 
 [[noreturn]] void refuse(const std::string& argument, const std::string& reason) {
   throw SceneError("--set " + argument + ": " + reason);
