@@ -24,6 +24,7 @@ struct OverlayLabel {
 struct OverlayMath {
   std::string key;                         // one per distinct SVG: the painter rasterises each key once
   std::shared_ptr<const std::string> svg;  // null: none
+  std::string tex;                         // what it was typeset from (for tests; not drawn)
   float pixels_per_point = 1.5f;           // the SVG's units (TeX points) on screen at 720 lines
 };
 

@@ -325,7 +325,9 @@ void OverlayPainter::Cairo::panels(const Overlay& overlay, double left_top, doub
   cairo_t* cr = context.get();
   const double margin = 20 * scale, gap = 10 * scale;
   double next_top[2] = {left_top + gap, right_top + gap};              // top left, top right
-  double next_bottom[3] = {height - margin, height - margin, captions_top - gap};  // bottom left, right, centre
+  // Bottom left, right and centre: above the captions (which may span most of the width).
+  const double bottom = std::min(height - margin, captions_top - gap);
+  double next_bottom[3] = {bottom, bottom, bottom};
   for (const OverlayPanel& panel : overlay.panels) {
     const PanelPainter::Size size = panel_painter.measure(cr, panel, scale);
     double x = 0, y = 0;

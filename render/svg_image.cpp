@@ -3,6 +3,7 @@
 #include <librsvg/rsvg.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 
@@ -18,9 +19,20 @@ struct ErrorDeleter {
 using HandlePtr = std::unique_ptr<RsvgHandle, HandleDeleter>;
 using ErrorPtr = std::unique_ptr<GError, ErrorDeleter>;
 
+// `svg` with a style that strokes its paths `width` wide, after its opening tag.
+std::string emboldened(const std::string& svg, double width) {
+  const size_t opening = svg.find("<svg");
+  const size_t end = opening == std::string::npos ? opening : svg.find('>', opening);
+  if (end == std::string::npos || !(width > 0)) return svg;
+  char style[160];
+  std::snprintf(style, sizeof style, "<style>path{stroke:#000;stroke-width:%.3f;stroke-linejoin:round}</style>", width);
+  return svg.substr(0, end + 1) + style + svg.substr(end + 1);
+}
+
 }  // namespace
 
-SvgRaster rasterise_svg(const std::string& svg, double pixels_per_point) {
+SvgRaster rasterise_svg(const std::string& original, double pixels_per_point, double embolden) {
+  const std::string svg = emboldened(original, embolden);
   GError* raw_error = nullptr;
   HandlePtr handle(rsvg_handle_new_from_data(reinterpret_cast<const guint8*>(svg.data()), svg.size(), &raw_error));
   ErrorPtr error(raw_error);

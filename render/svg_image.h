@@ -14,8 +14,9 @@ struct SvgRaster {
 };
 
 // Draws `svg` at `pixels_per_point` pixels per unit of its size (points, for dvisvgm's SVGs; a
-// pixel of transparent margin all round so anti-aliased edges are whole). Throws
-// std::runtime_error when librsvg cannot read it.
-SvgRaster rasterise_svg(const std::string& svg, double pixels_per_point);
+// pixel of transparent margin all round so anti-aliased edges are whole). `embolden` (units)
+// strokes every path that much wider: Computer Modern's hairlines are thinner than a pixel at
+// video sizes and would read pale grey. Throws std::runtime_error when librsvg cannot read it.
+SvgRaster rasterise_svg(const std::string& svg, double pixels_per_point, double embolden = 0);
 
 }  // namespace impulse::render

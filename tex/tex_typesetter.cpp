@@ -76,7 +76,9 @@ std::string latex_error(const std::string& log) {
       context = line.substr(line.find(' ') + 1);
       break;
     }
+  // Without the document's own words around the expression.
   if (context.rfind(kMathOpening, 0) == 0) context = context.substr(std::string(kMathOpening).size());
+  if (!context.empty() && context.back() == '$') context.pop_back();
   if (message == "Undefined control sequence") {
     const size_t slash = context.rfind('\\');
     if (slash != std::string::npos) return message + " " + trim(context.substr(slash));

@@ -12,7 +12,12 @@ namespace {
 
 constexpr float kPanelSize = 16;  // pixels at 720 lines: an [overlay] equation panel's letters (as its heading's)
 
-std::string figures(double value) { return render::three_figures(value); }
+// Three significant figures, as labels write them; a value that rounds to zero is "0.00", not "-0.00".
+std::string figures(double value) {
+  std::string text = render::three_figures(value);
+  if (text.front() == '-' && text.find_first_not_of("-0.") == std::string::npos) text.erase(0, 1);
+  return text;
+}
 
 std::string vector_figures(const physics::Vec3& v) {
   std::string text = "(";  // appended, not "(" + ...: GCC 12 warns falsely (-Wrestrict) about that
@@ -136,7 +141,7 @@ LiveEquations::LiveEquations(const Scene& scene, tex::TexTypesetter& typesetter)
 render::OverlayMath LiveEquations::typeset(const std::string& tex, const std::string& origin, float size) const {
   try {
     const std::shared_ptr<const tex::TypesetMath> math = typesetter_.typeset(tex);
-    return {math->key, std::shared_ptr<const std::string>(math, &math->svg), size / 12.0f};  // 12 pt TeX
+    return {math->key, std::shared_ptr<const std::string>(math, &math->svg), tex, size / 12.0f};  // 12 pt TeX
   } catch (const tex::TexError& error) {
     throw SceneError(origin + ": " + error.what());
   }
