@@ -11,6 +11,7 @@ namespace {
 
 const Colour kInk{0.13f, 0.13f, 0.15f};  // as the overlay's other text
 constexpr size_t kMostRasters = 256;      // distinct texts × sizes kept; a lecture shows a handful
+constexpr double kFewestPixelsPerPoint = 1.0;
 constexpr double kEmbolden = 0.25;        // TeX points of stroke round each glyph: legible at 480 lines
 
 struct Metrics {
@@ -28,7 +29,8 @@ void set_line_font(cairo_t* cr, double size, bool heading) {
 
 const SvgRaster* PanelPainter::raster(const OverlayMath& math, double scale) {
   if (!math.svg) return nullptr;
-  const double pixels_per_point = math.pixels_per_point * scale;
+  // Never under a pixel a point: 12 pt letters smaller than 12 pixels lose their subscripts.
+  const double pixels_per_point = std::max(double(math.pixels_per_point) * scale, kFewestPixelsPerPoint);
   char size[32];
   std::snprintf(size, sizeof size, "@%.4f", pixels_per_point);
   const std::string key = math.key + size;

@@ -10,7 +10,8 @@
 namespace impulse::demos {
 namespace {
 
-constexpr float kPanelSize = 16;  // pixels at 720 lines: an [overlay] equation panel's letters (as its heading's)
+constexpr float kPanelSize = 16;      // pixels at 720 lines: eq. 8's letters (as its heading's), in a pane
+constexpr float kWidePanelSize = 18;  // eq. 13's, whose long denominator needs them larger
 
 // Three significant figures, as labels write them; a value that rounds to zero is "0.00", not "-0.00".
 std::string figures(double value) {
@@ -170,7 +171,8 @@ void LiveEquations::add_panels(double time, const ImpactNumbers& impact, render:
     std::snprintf(heading, sizeof heading, "%s at t = %.2f s (SI units)", scene_.overlay.equation == "eq13" ? "eq. 13" : "eq. 8",
                   impact.time);
     panel.lines = {heading};
-    panel.math = typeset(equation_panel_tex(scene_.overlay.equation, impact), scene_.path + ": [overlay] equation", kPanelSize);
+    panel.math = typeset(equation_panel_tex(scene_.overlay.equation, impact), scene_.path + ": [overlay] equation",
+                         scene_.overlay.equation == "eq13" ? kWidePanelSize : kPanelSize);
     overlay.panels.push_back(std::move(panel));
   }
   for (const EquationCue& cue : scene_.equations) {
