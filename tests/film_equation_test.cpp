@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -116,6 +117,19 @@ TEST(Tex, LatexErrorsAreReportedInOneLine) {
   EXPECT_EQ(error_of("J = \\fracc{1}{2}"), "LaTeX: Undefined control sequence \\fracc");
   EXPECT_EQ(error_of("x^{2"), "LaTeX: Missing } inserted after 'x^{2'");
   EXPECT_NE(error_of("a $ b").find("a '$' in the expression"), std::string::npos);
+}
+
+// An endless TeX loop is stopped at the time limit, with the whole process group.
+TEST(Tex, AnEndlessLoopIsStoppedAtTheTimeLimit) {
+  tex::TexTypesetter typesetter(tex::TexCache(scratch("tex_test", "endless").string()), 1.0);
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    typesetter.typeset("\\loop\\iftrue\\repeat");
+    FAIL() << "no error";
+  } catch (const tex::TexError& error) {
+    EXPECT_NE(std::string(error.what()).find("took longer than 1 s"), std::string::npos) << error.what();
+  }
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
 }
 
 TEST(Tex, NoLatexSaysWhatToInstall) {
