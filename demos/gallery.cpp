@@ -1,6 +1,7 @@
 #include "demos/gallery.h"
 
 #include "demos/film/render_scene.h"
+#include "demos/program.h"
 #include "demos/scene/scene_file.h"
 #include "physics/response_method.h"
 #include "render/part_file.h"
@@ -69,7 +70,21 @@ h1 { font-size: 1.8rem; } h2 { font-size: 1.25rem; margin: 0 0 .5rem; }
 section { background: #fff; border-radius: 10px; padding: 1rem 1.2rem; margin: 1.2rem 0; box-shadow: 0 1px 3px #0002; }
 video { width: 100%; border-radius: 6px; background: #000; }
 .facts, .files { font-size: .9rem; color: #555; } code { background: #eef; padding: 0 .3rem; border-radius: 3px; }
+.failed { border-left: 6px solid #d55e00; }
 )";
+
+// A scene the catalogue's run did not render: its name, why (by exit code), and what to run to
+// see the message; an older video, if any, follows it.
+std::string failed_section(const fs::path& scene_file, int exit_code, bool older_video) {
+  const std::string name = scene_file.stem().string();
+  std::ostringstream section;
+  section << "<section id=\"" << html(name) << "-failed\" class=\"failed\">\n<h2>" << html(name) << ": not rendered</h2>\n"
+          << "<p>The last catalogue run failed on <code>" << html(scene_file.filename().string()) << "</code> (exit code "
+          << exit_code << ": " << html(exit_meaning(exit_code)) << ")."
+          << (older_video ? " The video below is the last one completed." : "") << " To see why: <code>impulse render "
+          << html(scene_file.string()) << "</code></p>\n</section>\n";
+  return section.str();
+}
 
 }  // namespace
 
@@ -77,7 +92,8 @@ std::string pane_video_path(const std::string& video_path, int pane) {
   return fs::path(video_path).replace_extension(".pane-" + std::to_string(pane) + ".mp4").string();
 }
 
-int write_gallery(const std::string& scenes_directory, const std::string& out_directory) {
+int write_gallery(const std::string& scenes_directory, const std::string& out_directory,
+                  const std::map<std::string, int>& failed) {
   std::vector<fs::path> scene_files;
   if (fs::is_directory(scenes_directory))
     for (const auto& entry : fs::directory_iterator(scenes_directory))
@@ -98,7 +114,12 @@ int write_gallery(const std::string& scenes_directory, const std::string& out_di
   for (const fs::path& scene_file : scene_files) {
     const std::string name = scene_file.stem().string();
     const fs::path video = fs::path(out_directory) / (name + ".mp4");
-    if (!fs::is_regular_file(video)) continue;
+    const bool has_video = fs::is_regular_file(video);
+    // A scene whose checks failed has its video; any other failure has none from this run.
+    if (const auto failure = failed.find(scene_file.filename().string());
+        failure != failed.end() && (failure->second != kExitCheckFailed || !has_video))
+      page << failed_section(scene_file, failure->second, has_video);
+    if (!has_video) continue;
     Scene scene;
     try {
       scene = load_scene(scene_file.string());

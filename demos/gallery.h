@@ -4,6 +4,7 @@
 // link to each pane rendered alone. Links are relative: the page works opened from disk and
 // served by any static server.
 #pragma once
+#include <map>
 #include <string>
 
 namespace impulse::demos {
@@ -13,7 +14,10 @@ namespace impulse::demos {
 std::string pane_video_path(const std::string& video_path, int pane);
 
 // Writes OUT/index.html (as a .part file, renamed when complete) and returns how many videos it
-// shows. Throws render::OutputError when it cannot be written.
-int write_gallery(const std::string& scenes_directory, const std::string& out_directory);
+// shows. `failed` holds the scene files (by file name) that the catalogue's run did not render,
+// each with its exit code: each is marked, with its video from an earlier run if there is one.
+// Throws render::OutputError when it cannot be written.
+int write_gallery(const std::string& scenes_directory, const std::string& out_directory,
+                  const std::map<std::string, int>& failed = {});
 
 }  // namespace impulse::demos

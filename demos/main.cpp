@@ -1,10 +1,12 @@
 // The `impulse` command line: scene files in, teaching videos out.
 #include "demos/catalogue.h"
+#include "demos/film/moments.h"
 #include "demos/gallery.h"
 #include "demos/interrupts.h"
 #include "demos/program.h"
 #include "demos/simulate.h"
 #include "demos/verify.h"
+#include "render/image_compare.h"
 
 #include <CLI/CLI.hpp>
 
@@ -38,15 +40,20 @@ std::vector<int> parse_frames(const std::string& list) {
   return frames;
 }
 
-// The video (the default one in out/, made if need be) and the PNG frames asked for.
+// The video (the default one in out/, made if need be) and the PNG frames and stills asked for.
 demos::RenderOptions output_options(const std::string& video_path, const std::string& default_path,
-                                    const std::string& png_directory, const std::string& frame_list) {
+                                    const std::string& png_directory, const std::string& frame_list,
+                                    const std::string& moment_list) {
   demos::RenderOptions options;
   options.video_path = video_path.empty() ? default_path : video_path;
   options.png_directory = png_directory;
   if (!frame_list.empty()) {
     if (png_directory.empty()) throw std::invalid_argument("--frames chooses PNG frames: add --png DIR");
     options.png_frames = parse_frames(frame_list);
+  }
+  if (!moment_list.empty()) {
+    if (png_directory.empty()) throw std::invalid_argument("--at chooses PNG stills: add --png DIR");
+    options.moments = demos::parse_moments(moment_list, "--at");
   }
   if (video_path.empty()) fs::create_directories(fs::path(default_path).parent_path());
   return options;
@@ -89,6 +96,33 @@ void add_video_options(CLI::App* command, VideoOverrides& overrides) {
 
 }  // namespace
 
+// verify's --help footer, with the tolerances it uses.
+std::string verify_help() {
+  const render::ImageTolerance tolerance;
+  char text[2400];
+  std::snprintf(
+      text, sizeof text,
+      "\nMoments are seconds of simulated time, so goldens survive a change of frame rate. By default --update\n"
+      "records the start, the middle, the end and each impact that slows the video; a later run compares the\n"
+      "moments the goldens' manifest.toml lists (size, frame rate, quality, drawing options, --set, program).\n"
+      "\nA pixel differs when its perceptual (YIQ) colour distance is over %.2f and it is not an anti-aliased\n"
+      "edge; a still differs when a connected region of more than %d such pixels, or more than %.2f %% of\n"
+      "the frame, differs. A body differs when it is more than %g m from its recorded position or turned\n"
+      "more than %g rad (poses.csv). A still that differs gets t_0.500.actual.png, .diff.png and .strip.png\n"
+      "(golden | actual | diff) beside its golden; DIR/report.html shows every moment.\n"
+      "\nExamples:\n"
+      "  impulse verify course/drop.toml --golden course/golden/drop --quality low --update   # record\n"
+      "  impulse verify course/drop.toml --golden course/golden/drop --quality low            # compare\n"
+      "  impulse verify scene.toml --golden golden/ --at 0.5,1,2 --update                    # chosen moments\n"
+      "\nExit codes: 0 every still and pose matches (or the goldens were written); 1 the scene file or the\n"
+      "command line is wrong, or there is nothing to compare with (no manifest, a moment without golden);\n"
+      "2 a still or a body's pose differs, or the size is not the goldens' (it says what to re-run), or a\n"
+      "[[check]] of the scene failed; 3 a file cannot be written; 4 anything else failed.",
+      tolerance.colour_threshold, tolerance.max_region_pixels, 100 * tolerance.max_differing_share, demos::kPoseMetres,
+      demos::kPoseRadians);
+  return text;
+}
+
 constexpr const char* kExitCodes =
     "\nExit codes: 0 done; 1 the scene file or the command line is wrong (nothing written); 2 a [[check]]\n"
     "of the scene or a golden frame (verify) failed (outputs written); 3 the output cannot be written (nothing replaced, no temporary\n"
@@ -116,14 +150,18 @@ int main(int argc, char** argv) {
   render->footer(std::string("\nExamples:\n"
                              "  impulse render assets/scenes/bounce.toml -o out/bounce.mp4\n"
                              "  impulse render assets/scenes/bounce.toml --quality low --set body[0].restitution=0.9\n"
-                             "  impulse render assets/scenes/s4_angular.toml --png frames --frames 0,45,90\n") +
+                             "  impulse render assets/scenes/s4_angular.toml --png frames --frames 0,45,90\n"
+                             "  impulse render assets/scenes/s4_angular.toml --png stills --at 0.5,1,2   # stills/t_0.500.png ...\n") +
                  kExitCodes);
-  std::string scene_path, video_path, png_directory, frame_list;
+  std::string scene_path, video_path, png_directory, frame_list, moment_list;
   VideoOverrides render_overrides;
   render->add_option("scene", scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
   render->add_option("-o,--output", video_path, "Video to write (default: out/<scene name>.mp4)");
   render->add_option("--png", png_directory, "Also write frames as PNG (frame_00000.png, ...) into this directory");
   render->add_option("--frames", frame_list, "With --png: only these frames, numbered from 0, e.g. 0,45,90");
+  render->add_option("--at", moment_list,
+                     "With --png: stills at these moments of simulated time, in seconds (t_0.500.png, ...), "
+                     "e.g. 0.5,1,2; the video's frames are then not written as PNG unless --frames says so");
   add_video_options(render, render_overrides);
 
   auto* compare = app.add_subcommand("compare", "Two to four settings or scenes side by side in one video, one pane each");
@@ -135,7 +173,7 @@ int main(int argc, char** argv) {
                               "  impulse compare a.toml b.toml -o a_vs_b.mp4\n") +
                   kExitCodes);
   std::vector<std::string> compare_paths;
-  std::string vary, compare_video_path, compare_png_directory, compare_frame_list;
+  std::string vary, compare_video_path, compare_png_directory, compare_frame_list, compare_moment_list;
   VideoOverrides compare_overrides;
   compare->add_option("scenes", compare_paths, "Scene files (.toml): one with --vary, else two to four")
       ->required()
@@ -146,6 +184,7 @@ int main(int argc, char** argv) {
                       "Video to write (default: out/<scene>_<key>.mp4, or out/<a>_vs_<b>.mp4)");
   compare->add_option("--png", compare_png_directory, "Also write frames as PNG (frame_00000.png, ...) into this directory");
   compare->add_option("--frames", compare_frame_list, "With --png: only these frames, numbered from 0, e.g. 0,45,90");
+  compare->add_option("--at", compare_moment_list, "With --png: stills at these moments in seconds (t_0.500.png, ...)");
   add_video_options(compare, compare_overrides);
 
   auto* catalogue = app.add_subcommand("catalogue", "Render every scene of a directory into videos");
@@ -199,20 +238,19 @@ int main(int argc, char** argv) {
   simulate->add_option("--world", trace.world_path, "CSV: a row per step (energies, linear and angular momentum)");
   add_set_option(simulate, simulate_settings);
 
-  auto* verify = app.add_subcommand("verify", "Render chosen frames and compare them with golden PNGs (visual regression)");
-  verify->footer(std::string("\nExamples:\n"
-                             "  impulse verify my_course/drop.toml --golden my_course/golden/drop --update   # make the goldens\n"
-                             "  impulse verify my_course/drop.toml --golden my_course/golden/drop            # compare with them\n"
-                             "  impulse verify scene.toml --golden golden/ --frames 0,45,90\n") +
-                 kExitCodes);
+  auto* verify = app.add_subcommand("verify", "Render stills at chosen moments and compare them, and every body's pose, with goldens");
+  verify->footer(verify_help());
   demos::VerifyOptions verify_options;
-  std::string verify_frames;
+  std::string verify_moments;
   VideoOverrides verify_overrides;
   verify->add_option("scene", scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
-  verify->add_option("--golden", verify_options.golden_directory, "Directory of golden frames (frame_00000.png, ...)")
+  verify->add_option("--golden", verify_options.golden_directory,
+                     "Directory of the goldens: t_0.500.png ..., manifest.toml, poses.csv")
       ->required();
-  verify->add_option("--frames", verify_frames, "Frames to compare, numbered from 0 (default: first, middle and last)");
-  verify->add_flag("--update", verify_options.update, "Write the rendered frames as the goldens instead of comparing");
+  verify->add_option("--at", verify_moments,
+                     "Moments to compare, in seconds of simulated time, e.g. 0.5,1,2 (default: the goldens' manifest's; "
+                     "with --update: start, middle, end and each impact that slows the video)");
+  verify->add_flag("--update", verify_options.update, "Record the stills, manifest and poses as the goldens instead of comparing");
   add_video_options(verify, verify_overrides);
 
   auto* check = app.add_subcommand("check", "Read a scene file and report any error in it, without rendering");
@@ -236,12 +274,13 @@ int main(int argc, char** argv) {
   const bool progress = !quiet && (force_progress || isatty(STDERR_FILENO));
   try {
     if (*render) {
-      demos::RenderOptions options = output_options(video_path, default_video_path(scene_path, "out"), png_directory, frame_list);
+      demos::RenderOptions options = output_options(video_path, default_video_path(scene_path, "out"), png_directory, frame_list,
+                                                           moment_list);
       return render_one(scene_path, options, render_overrides, progress);
     }
     if (*compare) {
       demos::RenderOptions options = output_options(compare_video_path, default_comparison_path(compare_paths, vary),
-                                                    compare_png_directory, compare_frame_list);
+                                                    compare_png_directory, compare_frame_list, compare_moment_list);
       return render_comparison(compare_paths, vary, options, compare_overrides, progress);
     }
     if (*gallery) {
@@ -267,13 +306,17 @@ int main(int argc, char** argv) {
       return render_catalogue(scenes_directory, out_directory, progress, catalogue_overrides, catalogue_choice);
     }
     if (*verify) {
-      demos::Scene scene = load(scene_path, verify_overrides.settings);
       demos::RenderOptions options;
-      verify_overrides.apply(scene, options);
-      if (!verify_frames.empty()) verify_options.frames = parse_frames(verify_frames);
-      const demos::VerifyResult result = demos::verify_scene(scene, options, verify_options);
+      const Comparison panes = load_panes(scene_path, verify_overrides, options);
+      if (!verify_moments.empty()) verify_options.moments = demos::parse_moments(verify_moments, "--at");
+      verify_options.scene_path = scene_path;
+      verify_options.settings = verify_overrides.settings;
+      const demos::VerifyResult result = demos::verify_scene(panes.panes, options, verify_options);
       for (const std::string& line : result.lines) std::fprintf(stderr, "%s: %s\n", scene_path.c_str(), line.c_str());
-      const int checks = report_checks(scene_path, result.checks);
+      int checks = 0;
+      for (size_t i = 0; i < result.checks.size(); ++i)
+        checks = std::max(checks, report_checks(panes.panes[i].label.empty() ? scene_path : scene_path + " [" + panes.panes[i].label + "]",
+                                                result.checks[i]));
       return result.passed ? checks : kExitCheckFailed;
     }
     if (*simulate) {

@@ -15,14 +15,6 @@
 namespace fs = std::filesystem;
 
 namespace impulse::demos {
-namespace {
-// The panes of a comparison: one scene per value of --vary or of the file's [compare], or one per
-// scene file. Every pane gets the first's camera, video, playback and duration.
-struct Comparison {
-  std::vector<std::string> paths;      // the scene file of each pane
-  std::vector<demos::Scene> scenes;
-  std::vector<demos::Pane> panes;
-};
 
 Comparison load_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
                            const VideoOverrides& overrides, demos::RenderOptions& options) {
@@ -63,7 +55,16 @@ Comparison load_comparison(const std::vector<std::string>& scene_paths, const st
   return comparison;
 }
 
-}  // namespace
+Comparison load_panes(const std::string& scene_path, const VideoOverrides& overrides, demos::RenderOptions& options) {
+  demos::Scene scene = load(scene_path, overrides.settings);
+  if (!scene.compare.values.empty()) return load_comparison({scene_path}, "", overrides, options);
+  Comparison alone;
+  overrides.apply(scene, options);
+  alone.scenes.push_back(std::move(scene));
+  alone.paths = {scene_path};
+  alone.panes = {{&alone.scenes.front(), ""}};
+  return alone;
+}
 
 demos::Scene load(const std::string& scene_path, const std::vector<std::string>& settings, bool typeset) {
   demos::Scene scene = demos::load_scene(scene_path, settings);
@@ -81,6 +82,18 @@ int report_checks(const std::string& scene_path, const std::vector<demos::CheckR
   }
   if (failed > 0) std::fprintf(stderr, "impulse: %s: %d of %zu checks failed\n", scene_path.c_str(), failed, results.size());
   return failed > 0 ? kExitCheckFailed : 0;
+}
+
+std::string exit_meaning(int exit_code) {
+  switch (exit_code) {
+    case 0: return "done";
+    case kExitBadInput: return "the scene file or the command line is wrong";
+    case kExitCheckFailed: return "a [[check]] of the scene failed";
+    case kExitOutput: return "the output cannot be written";
+    case kExitFailure: return "the renderer or the encoder failed";
+  }
+  if (exit_code > 128) return "ended by signal " + std::to_string(exit_code - 128);
+  return "failed";
 }
 
 int report(const std::exception& error) {

@@ -20,6 +20,9 @@ inline constexpr int kExitCheckFailed = 2;  // a [[check]] of the scene did not 
 inline constexpr int kExitOutput = 3;    // the output cannot be written; nothing was replaced, no temporary left
 inline constexpr int kExitFailure = 4;   // anything else went wrong (the renderer, the encoder)
 
+// What an exit code means, in words: "the output cannot be written", "interrupted by signal 15".
+std::string exit_meaning(int exit_code);
+
 // What the command line changes in every scene it reads.
 struct VideoOverrides {
   std::vector<std::string> settings;  // --set KEY=VALUE, over the scene file
@@ -51,6 +54,19 @@ struct VideoOverrides {
                                                    : render::ShadowMethod::ground;
   }
 };
+
+// The panes of a comparison: one scene per value of --vary or of the file's [compare], or one per
+// scene file. Every pane gets the first's camera, video, playback and duration, and the first
+// scene the command line's video options. A pane points into `scenes`.
+struct Comparison {
+  std::vector<std::string> paths;      // the scene file of each pane
+  std::vector<demos::Scene> scenes;
+  std::vector<demos::Pane> panes;
+};
+Comparison load_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
+                           const VideoOverrides& overrides, demos::RenderOptions& options);
+// One scene file as it renders: its [compare]'s panes, or itself alone in one pane.
+Comparison load_panes(const std::string& scene_path, const VideoOverrides& overrides, demos::RenderOptions& options);
 
 // The scene with the --set settings over it; what is odd but allowed is said on stderr.
 // With `typeset`, its [[equation]]s' TeX is typeset too (check_equations): a LaTeX error is the

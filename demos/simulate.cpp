@@ -67,37 +67,42 @@ long simulate_scene(const Scene& scene, const TraceOptions& options, std::vector
   const double duration = options.duration >= 0 ? options.duration : scene.duration;
   const int every = std::max(options.every, 1);
   auto name_of = [&](int body) { return body >= 0 ? quoted(world.bodies()[body].name) : std::string("world"); };
-  long steps = 0;
-  while (world.time() < duration - 0.5 * scene.world.time_step) {
-    world.step();
-    watch.step(world);
-    ++steps;
-    const bool last = !(world.time() < duration - 0.5 * scene.world.time_step);
-    if (steps % every != 0 && !last) continue;
+  // The rows of the world as it is now: the starting state at step 0 (no contacts: none has been
+  // looked for), then after each step kept.
+  auto write_rows = [&](long step) {
     const physics::StepRecord& record = world.record();
     const double t = record.time;
     if (bodies) {
       for (const physics::Body& b : world.bodies()) {
         std::fprintf(bodies->get(), "%.9g,%ld,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
-                     steps, quoted(b.name).c_str(), b.position.x(), b.position.y(), b.position.z(), b.orientation.w(),
+                     step, quoted(b.name).c_str(), b.position.x(), b.position.y(), b.position.z(), b.orientation.w(),
                      b.orientation.x(), b.orientation.y(), b.orientation.z(), b.velocity.x(), b.velocity.y(),
                      b.velocity.z(), b.angular_velocity.x(), b.angular_velocity.y(), b.angular_velocity.z());
       }
     }
-    if (contacts) {
+    if (contacts && step > 0) {
       for (const physics::ContactRecord& c : record.contacts) {
-        std::fprintf(contacts->get(), "%.9g,%ld,%s,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t, steps,
+        std::fprintf(contacts->get(), "%.9g,%ld,%s,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t, step,
                      name_of(c.body_a).c_str(), name_of(c.body_b).c_str(), c.point.x(), c.point.y(), c.point.z(),
                      c.normal.x(), c.normal.y(), c.normal.z(), c.penetration, c.normal_impulse, c.tangent_impulse.x(),
                      c.tangent_impulse.y(), c.tangent_impulse.z());
       }
     }
     if (world_csv) {
-      std::fprintf(world_csv->get(), "%.9g,%ld,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t, steps,
+      std::fprintf(world_csv->get(), "%.9g,%ld,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t, step,
                    record.kinetic_energy, record.potential_energy, record.linear_momentum.x(),
                    record.linear_momentum.y(), record.linear_momentum.z(), record.angular_momentum.x(),
                    record.angular_momentum.y(), record.angular_momentum.z());
     }
+  };
+  write_rows(0);
+  long steps = 0;
+  while (world.time() < duration - 0.5 * scene.world.time_step) {
+    world.step();
+    watch.step(world);
+    ++steps;
+    const bool last = !(world.time() < duration - 0.5 * scene.world.time_step);
+    if (steps % every == 0 || last) write_rows(steps);
   }
   for (std::optional<CsvFile>* file : {&bodies, &contacts, &world_csv})
     if (*file) (*file)->commit();

@@ -13,11 +13,18 @@ namespace impulse::render {
 
 using Vec2f = Eigen::Vector2f;
 
-// Text beside a point of the frame (e.g. an arrow's tip): "J = 2.41 N·s".
+// A line on screen, e.g. an arrow drawn under the overlay.
+struct ScreenSegment {
+  Vec2f from, to;
+};
+
+// Text beside a point of the frame (e.g. an arrow's tip): "J = 2.41 N·s". It goes to the first
+// place around the anchor (right, then left, above, below) that covers none of `avoid`.
 struct OverlayLabel {
   Vec2f anchor;
   std::string text;
   Colour colour{0.1f, 0.1f, 0.1f};
+  std::vector<ScreenSegment> avoid;
 };
 
 // Typeset mathematics: an SVG of filled paths (LaTeX through dvisvgm), drawn in the ink colour.

@@ -55,6 +55,25 @@ void legend_arrow(cairo_t* cr, double x0, double y, double length, double scale,
   cairo_fill(cr);
 }
 
+// Whether the segment from a to b meets the rectangle [x0, x1] x [y0, y1] (Liang-Barsky clipping).
+bool segment_meets(const Vec2f& a, const Vec2f& b, double x0, double y0, double x1, double y1) {
+  double enter = 0, leave = 1;
+  const double d[2] = {double(b.x() - a.x()), double(b.y() - a.y())};
+  const double p[4] = {-d[0], d[0], -d[1], d[1]};
+  const double q[4] = {a.x() - x0, x1 - a.x(), a.y() - y0, y1 - a.y()};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0) enter = std::max(enter, t);
+    else leave = std::min(leave, t);
+    if (enter > leave) return false;
+  }
+  return true;
+}
+
 // Splits `text` at spaces into lines no wider than `max_width`.
 std::vector<std::string> wrap(cairo_t* cr, const std::string& text, double max_width) {
   std::vector<std::string> lines;
@@ -110,6 +129,7 @@ struct OverlayPainter::Cairo {
   double plots(const Overlay& overlay, double top);   // returns the column's bottom
   double legend(const Overlay& overlay, double top);  // returns its bottom
   void labels(const Overlay& overlay);
+  std::pair<double, double> label_place(const OverlayLabel& label, double text_width, double size) const;
   // `left_top`, `right_top`: where the left and right columns' content ends; `captions_top`.
   void panels(const Overlay& overlay, double left_top, double right_top, double captions_top);
   double captions(const Overlay& overlay);  // returns the top of the captions (height if none)
@@ -305,8 +325,7 @@ void OverlayPainter::Cairo::labels(const Overlay& overlay) {
   set_font(cr, size, true);
   for (const OverlayLabel& label : overlay.labels) {
     const double text = text_width(cr, label.text);
-    const double x = std::clamp(double(label.anchor.x()) + 10 * scale, 4.0, width - text - 4.0);
-    const double y = std::clamp(double(label.anchor.y()) - 8 * scale, size + 4.0, height - 4.0);
+    const auto [x, y] = label_place(label, text, size);
     mark(x, y - size, text, 1.3 * size);
     cairo_move_to(cr, x, y);
     cairo_text_path(cr, label.text.c_str());
@@ -317,6 +336,32 @@ void OverlayPainter::Cairo::labels(const Overlay& overlay) {
     set_colour(cr, {label.colour.r * 0.8f, label.colour.g * 0.8f, label.colour.b * 0.8f});
     cairo_fill(cr);
   }
+}
+
+// The label's text baseline: the first of six places around its anchor (right above, right below,
+// left above, left below, above, below), each kept inside the frame, whose box covers none of the
+// segments it avoids; else the one covering fewest.
+std::pair<double, double> OverlayPainter::Cairo::label_place(const OverlayLabel& label, double text, double size) const {
+  const double ax = label.anchor.x(), ay = label.anchor.y(), side = 10 * scale, rise = 8 * scale;
+  const double places[6][2] = {{ax + side, ay - rise},          {ax + side, ay + size + rise},
+                               {ax - side - text, ay - rise},   {ax - side - text, ay + size + rise},
+                               {ax - text / 2, ay - 2 * rise},  {ax - text / 2, ay + size + 2 * rise}};
+  const double margin = 3 * scale;  // an arrow's half width
+  std::pair<double, double> best{0, 0};
+  int fewest = INT32_MAX;
+  for (const auto& place : places) {
+    const double x = std::clamp(place[0], 4.0, width - text - 4.0);
+    const double y = std::clamp(place[1], size + 4.0, height - 4.0);
+    int covered = 0;
+    for (const ScreenSegment& segment : label.avoid)
+      covered += segment_meets(segment.from, segment.to, x - margin, y - size - margin, x + text + margin, y + 0.3 * size + margin);
+    if (covered < fewest) {
+      fewest = covered;
+      best = {x, y};
+    }
+    if (covered == 0) break;
+  }
+  return best;
 }
 
 // Each panel at its corner, or stacked in its place: down from under the title and legend (top

@@ -126,6 +126,21 @@ position = [0, 0.3, -2]
   std::ifstream real_time(dir / "real_time.vtt");
   const std::string track((std::istreambuf_iterator<char>(real_time)), std::istreambuf_iterator<char>());
   EXPECT_EQ(track, "WEBVTT\n\n1\n00:00:00.400 --> 00:00:00.800\nMomentum is kept\n");
+  // Without impacts that slow the video, a chapter at each caption: the first starts the video.
+  std::ifstream chapters(dir / "real_time.chapters.vtt");
+  const std::string chapter_track((std::istreambuf_iterator<char>(chapters)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(chapter_track,
+            "WEBVTT\n\n1\n00:00:00.000 --> 00:00:00.400\nStart\n\n2\n00:00:00.400 --> 00:00:01.200\nMomentum is kept\n");
+
+  // One caption from the start is a chapter too: it names the video's one chapter.
+  std::string from_start = scene_text;
+  from_start.replace(from_start.find("start = 0.4"), 11, "start = 0.0");
+  std::ofstream(dir / "from_start.toml") << from_start;
+  options.video_path = (dir / "from_start.mp4").string();
+  demos::render_scene(demos::load_scene((dir / "from_start.toml").string()), options);
+  std::ifstream one(dir / "from_start.chapters.vtt");
+  const std::string one_chapter((std::istreambuf_iterator<char>(one)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(one_chapter, "WEBVTT\n\n1\n00:00:00.000 --> 00:00:01.200\nMomentum is kept\n");
 
   std::ofstream(dir / "slow.toml") << scene_text << "[playback]\nspeed = 0.2\n";
   options.video_path = (dir / "slow.mp4").string();

@@ -242,7 +242,7 @@ TEST(Tex, TheEq8PanelOfSection3ShowsTheHitsNumbers) {
   demos::SceneFilm film(scene, 854, 480);
   std::string tex;
   demos::ScenePicture picture;
-  while (film.next_frame() < film.frame_count() && tex.empty()) {
+  while (film.next_picture() < film.picture_count() && tex.empty()) {
     film.next(picture);
     for (const render::OverlayPanel& panel : picture.overlay.panels)
       if (panel.math.svg && !panel.lines.empty() && panel.lines[0].rfind("eq. 8 at t = ", 0) == 0) tex = panel.math.tex;

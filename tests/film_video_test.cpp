@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -149,22 +151,69 @@ TEST(RenderVideo, SlowMotionAroundAnImpactAddsFrames) {
   EXPECT_GT(video.frames.size(), 40u) << "the impact (J = 1 kg x 1.7 x 4.4 m/s) should slow playback";
 }
 
-// The poster beside a video is one of its frames: with no impact to slow the video, the middle one.
-TEST(RenderVideo, ThePosterIsTheMiddleFrameWithoutImpacts) {
-  const fs::path dir = scratch("poster");
-  std::string text = resting_ball(kNoMarks);
+// A ball falling 2 m onto the ground (the landing at 0.64 s), 30 frames of 320x240, no marks
+// drawn; `overlay` and `extra` are added to its [overlay] table and its end. Renders it with a
+// poster and returns the video's frames and the poster.
+struct PosterRun {
+  testing::DecodedVideo video;
+  render::Frame poster;
+};
+PosterRun render_fall_with_poster(const std::string& name, const std::string& overlay, const std::string& extra) {
+  const fs::path dir = scratch(name);
+  std::string text = resting_ball(kNoMarks) + extra;
   const std::string rest = "position = [0, 0.5, 0]";
   text.replace(text.find(rest), rest.size(), "position = [0, 2.5, 0]");  // falling: every frame differs
+  const std::string clock = "clock = false\n";
+  text.replace(text.find(clock), clock.size(), clock + overlay);
   const demos::Scene scene = scene_from(dir, text);
   demos::RenderOptions options;
-  options.video_path = (dir / "fall.mp4").string();
+  options.video_path = (dir / (name + ".mp4")).string();
   options.poster_path = demos::poster_path(options.video_path);
   demos::render_scene(scene, options);
-  const render::Frame poster = render::read_png((dir / "fall.png").string());
-  const testing::DecodedVideo video = testing::decode_video(options.video_path);
-  ASSERT_EQ(video.frames.size(), 30u);
-  EXPECT_TRUE(render::compare_images(video.frames[15], poster).matches);
-  EXPECT_FALSE(render::compare_images(video.frames[0], poster).matches);
+  PosterRun run{testing::decode_video(options.video_path), render::read_png(options.poster_path)};
+  EXPECT_EQ(run.video.frames.size(), 30u);
+  return run;
+}
+
+// Which frame of the video the poster is. The decoded frames went through H.264 (yuv420p halves
+// the colour planes): the poster is the frame that differs from it least, by far (-1 if none is).
+int poster_frame_of(const PosterRun& run) {
+  std::vector<int> differing;
+  for (const render::Frame& frame : run.video.frames) differing.push_back(render::compare_images(frame, run.poster).differing_pixels);
+  const int closest = int(std::min_element(differing.begin(), differing.end()) - differing.begin());
+  for (size_t i = 0; i < differing.size(); ++i)
+    if (int(i) != closest && !(differing[i] > 4 * differing[closest] + 50)) {
+      ADD_FAILURE() << "frames " << i << " and " << closest << " are both close: " << ::testing::PrintToString(differing);
+      return -1;
+    }
+  return closest;
+}
+
+// The poster beside a video is one of its frames: with no impulse labelled or drawn and no impact
+// to slow the video, the middle one.
+TEST(RenderVideo, ThePosterIsTheMiddleFrameWithNothingToShow) {
+  const PosterRun run = render_fall_with_poster("poster_middle", "label = \"none\"\n", "");
+  ASSERT_EQ(run.video.frames.size(), 30u);
+  EXPECT_EQ(poster_frame_of(run), 15);
+}
+
+// By default the poster shows the largest labelled impulse: the first frame after the landing.
+TEST(RenderVideo, ThePosterShowsTheLargestLabelledImpulse) {
+  const PosterRun run = render_fall_with_poster("poster_impulse", "", "");
+  ASSERT_EQ(run.video.frames.size(), 30u);
+  const int landing = int(std::ceil(std::sqrt(2 * 2.0 / 9.81) * 30));  // 0.639 s: frame 20
+  EXPECT_EQ(poster_frame_of(run), landing);
+}
+
+// [playback] poster chooses the moment, and a caption fading there moves the poster to the nearest
+// frame where it is whole: the caption fades in from 0.5 to 0.59 s, so 0.55 s (frame 17) gives way
+// to frame 18 (0.6 s), not 16 (0.53 s, still fading).
+TEST(RenderVideo, AChosenPosterMomentAvoidsAFadingCaption) {
+  const PosterRun run = render_fall_with_poster(
+      "poster_chosen", "label = \"none\"\n",
+      "[playback]\nposter = 0.55\n[[caption]]\ntext = \"Falling\"\nstart = 0.5\nend = 1.0\n");
+  ASSERT_EQ(run.video.frames.size(), 30u);
+  EXPECT_EQ(poster_frame_of(run), 18);
 }
 
 }  // namespace

@@ -24,12 +24,18 @@ bool updating() {
 
 void pin_llvmpipe_for_goldens() { setenv("LP_NATIVE_VECTOR_WIDTH", "128", 1); }
 
+bool llvmpipe_pinned() {
+  const char* width = std::getenv("LP_NATIVE_VECTOR_WIDTH");
+  return width != nullptr && std::string(width) == "128";
+}
+
 GoldenResult compare_with_golden(const std::string& name, const render::Frame& actual, GoldenTolerance tolerance) {
   const fs::path golden_path = kGoldenDirectory / (name + ".png");
   if (updating()) {
     fs::create_directories(kGoldenDirectory);
     render::write_png(golden_path.string(), actual);
-    return {true, "updated " + golden_path.string()};
+    return {false, true, "IMPULSE_UPDATE_GOLDEN=1: wrote " + golden_path.string() +
+                             " without comparing; look at it, then run the test without IMPULSE_UPDATE_GOLDEN"};
   }
   const fs::path actual_path = kFailureDirectory / (name + ".actual.png");
   auto keep_actual = [&] {
@@ -38,23 +44,22 @@ GoldenResult compare_with_golden(const std::string& name, const render::Frame& a
   };
   if (!fs::exists(golden_path)) {
     keep_actual();
-    return {false, "no golden image " + golden_path.string() + " (the render is in " + actual_path.string() +
+    return {false, false, "no golden image " + golden_path.string() + " (the render is in " + actual_path.string() +
                        "; look at it, then IMPULSE_UPDATE_GOLDEN=1 to make it the golden)"};
   }
   const render::Frame golden = render::read_png(golden_path.string());
-  if (golden.width != actual.width || golden.height != actual.height) {
-    keep_actual();
-    return {false, golden_path.string() + " is " + std::to_string(golden.width) + "x" + std::to_string(golden.height) +
-                       " but the render is " + std::to_string(actual.width) + "x" + std::to_string(actual.height)};
-  }
   const render::ImageDifference difference = render::compare_images(golden, actual, tolerance);
-  if (difference.matches) return {true, ""};
+  if (difference.matches) return {true, false, ""};
 
   keep_actual();
   const fs::path diff_path = kFailureDirectory / (name + ".diff.png");
-  render::write_png(diff_path.string(), render::difference_image(golden, actual, tolerance.pixel_threshold));
-  return {false, "golden " + name + ": " + difference.summary + "; see " + fs::absolute(diff_path).string() + " and " +
-                     fs::absolute(actual_path).string() + " (if the new look is meant, IMPULSE_UPDATE_GOLDEN=1 ctest -R Golden)"};
+  const fs::path strip_path = kFailureDirectory / (name + ".strip.png");
+  const render::Frame diff = render::difference_image(golden, actual, difference);
+  render::write_png(diff_path.string(), diff);
+  render::write_png(strip_path.string(), render::side_by_side({&golden, &actual, &diff}));
+  return {false, false, "golden " + golden_path.string() + ": " + difference.summary + "; see " +
+                            fs::absolute(strip_path).string() + " (golden | actual | diff; if the new look is meant, "
+                            "IMPULSE_UPDATE_GOLDEN=1 ctest -R Golden, then look at the goldens)"};
 }
 
 }  // namespace impulse::testing

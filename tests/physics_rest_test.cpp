@@ -1,9 +1,8 @@
-// Exercise 4: do bodies come to a complete rest? Sleeping, waking, determinism.
+// Exercise 4: do bodies come to a complete rest? Sleeping and waking.
 #include "tests/physics_test_scenes.h"
 
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -100,67 +99,6 @@ TEST(Rest, ABallSpinningOnTheSpotStops) {
   for (int i = 0; i < 10 * 60; ++i) world.step();
   EXPECT_LT(world.bodies()[ball].angular_velocity.norm() * 0.25, 1e-3) << "m/s at its rim";
   EXPECT_LT((world.bodies()[ball].position - Vec3(0, 0.25, 0)).norm(), 0.001) << "m";
-}
-
-uint64_t state_hash(const World& world) {
-  uint64_t hash = 1469598103934665603ull;  // FNV-1a over the bytes of every position and orientation
-  auto mix = [&](const void* data, size_t size) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
-  };
-  for (const Body& b : world.bodies()) {
-    mix(b.position.data(), sizeof(Real) * 3);
-    mix(b.orientation.coeffs().data(), sizeof(Real) * 4);
-  }
-  return hash;
-}
-
-World sphere_heap() {
-  World world;
-  add_ground(world, 0.2, 0.5);
-  for (int i = 0; i < 60; ++i)
-    add_sphere(world, Vec3((i % 4) * 0.45 - 0.7 + 0.01 * (i % 3), 0.5 + 0.55 * (i / 4), (i % 5) * 0.02), 0.2, 1.0 + 0.1 * (i % 7),
-               Vec3(0.3 * ((i * 7) % 5 - 2), 0, 0.2 * ((i * 3) % 5 - 2)), {0.3, 0.5});
-  return world;
-}
-
-// A heap big enough (several hundred manifolds) that the solver cuts it in two and two threads
-// share the sweeps; some bodies bounce, so restitution's time shifts run too.
-World mixed_heap(int threads) {
-  WorldSettings settings;
-  settings.threads = threads;
-  World world(settings);
-  add_ground(world, 0.3, 0.6);
-  for (int i = 0; i < 400; ++i) {
-    const Vec3 position((i % 10) * 1.1 - 5 + 0.05 * (i % 3), 0.6 + 1.1 * (i / 100) + 0.3 * ((i / 10) % 2), ((i / 10) % 10) * 1.1 - 5);
-    const Material material{i % 4 == 0 ? 0.5 : 0.0, 0.5};
-    if (i % 3 == 0) add_sphere(world, position, 0.45, 1.0, Vec3::Zero(), material);
-    else add_box(world, position, Vec3(0.45, 0.4, 0.35), 1.0, Quat(Eigen::AngleAxis<Real>(0.1 * (i % 7), Vec3(1, 2, 3).normalized())), Vec3::Zero(), material);
-  }
-  return world;
-}
-
-TEST(Determinism, OneThreadOrTwoGiveTheSameBits) {
-  World one = mixed_heap(1), two = mixed_heap(2);
-  size_t most_contacts = 0;
-  for (int i = 0; i < 240; ++i) {
-    one.step();
-    two.step();
-    most_contacts = std::max(most_contacts, one.record().contacts.size());
-  }
-  EXPECT_GT(most_contacts, 1000u) << "too few contacts for the sweeps to be shared";
-  EXPECT_EQ(state_hash(one), state_hash(two));
-  EXPECT_NE(state_hash(one), state_hash(mixed_heap(1))) << "nothing moved";
-}
-
-TEST(Determinism, SameSceneTwiceIsBitIdenticalAfter600Steps) {
-  World first = sphere_heap(), second = sphere_heap();
-  for (int i = 0; i < 600; ++i) {
-    first.step();
-    second.step();
-  }
-  EXPECT_EQ(state_hash(first), state_hash(second));
-  EXPECT_NE(state_hash(first), state_hash(sphere_heap())) << "nothing moved";
 }
 
 }  // namespace

@@ -14,8 +14,8 @@ namespace {
 using testing::bodies_scene;
 using testing::lecture_overlay;
 
-// Before any GL context: the same bytes on every x86-64 machine.
-const bool kPinned = [] {
+// Before any GL context (a static initialiser): the same bytes on every x86-64 machine.
+[[maybe_unused]] const bool kPinned = [] {
   testing::pin_llvmpipe_for_goldens();
   return true;
 }();
@@ -23,32 +23,32 @@ const bool kPinned = [] {
 constexpr int kWidth = 320;
 constexpr int kHeight = 240;
 
-void expect_golden(const std::string& name, const render::Frame& frame) {
-  const testing::GoldenResult result = testing::compare_with_golden(name, frame);
-  EXPECT_TRUE(result.passed) << result.message;
-}
+// Each test checks that the pin held (e.g. that no one set another width after it).
+class Golden : public ::testing::Test {
+ protected:
+  void SetUp() override { ASSERT_TRUE(testing::llvmpipe_pinned()) << "LP_NATIVE_VECTOR_WIDTH is not 128 for the goldens"; }
+};
 
-TEST(Golden, BodiesMarksAndGroundShadows) {
-  ASSERT_TRUE(kPinned);
+TEST_F(Golden, BodiesMarksAndGroundShadows) {
   render::Renderer renderer(kWidth, kHeight);
-  expect_golden("bodies", renderer.draw(bodies_scene()));
+  EXPECT_MATCHES_GOLDEN("bodies", renderer.draw(bodies_scene()));
 }
 
-TEST(Golden, LectureOverlay) {
+TEST_F(Golden, LectureOverlay) {
   render::Renderer renderer(kWidth, kHeight);
   render::Frame frame = renderer.draw(bodies_scene());
   render::OverlayPainter painter(kWidth, kHeight);
   painter.paint(lecture_overlay(), frame);
-  expect_golden("overlay", frame);
+  EXPECT_MATCHES_GOLDEN("overlay", frame);
 }
 
-TEST(Golden, TessellatedSpheresAndShadowMap) {
+TEST_F(Golden, TessellatedSpheresAndShadowMap) {
   render::RendererSettings settings;
   settings.spheres = render::SphereMethod::tessellated;
   settings.shadows = render::ShadowMethod::shadow_map;
   settings.shadow_map_size = 1024;
   render::Renderer renderer(kWidth, kHeight, settings);
-  expect_golden("tessellated_shadow_map", renderer.draw(bodies_scene()));
+  EXPECT_MATCHES_GOLDEN("tessellated_shadow_map", renderer.draw(bodies_scene()));
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 namespace impulse {
 namespace {
 
@@ -49,7 +51,7 @@ TEST(Overlay, CompositesOnlyWhereItPaintsInTheRightColour) {
 TEST(Overlay, LabelSitsBesideItsAnchor) {
   render::Frame frame{kWidth, kHeight, std::vector<uint8_t>(size_t(kWidth) * kHeight * 4, 255)};
   render::Overlay overlay;
-  overlay.labels = {{render::Vec2f(100, 120), "J = 2.41 N\u00b7s", {0.0f, 0.45f, 0.7f}}};
+  overlay.labels = {{render::Vec2f(100, 120), "J = 2.41 N\u00b7s", {0.0f, 0.45f, 0.7f}, {}}};
   render::OverlayPainter painter(kWidth, kHeight);
   painter.paint(overlay, frame);
   int inked_right = 0, inked_left = 0;
@@ -61,6 +63,29 @@ TEST(Overlay, LabelSitsBesideItsAnchor) {
   }
   EXPECT_GT(inked_right, 30) << "blue letters to the right of the anchor";
   EXPECT_EQ(inked_left, 0);
+}
+
+// A label whose first place, to the right of and above its anchor, would cover an arrow goes to a
+// place that covers none.
+TEST(Overlay, LabelMovesOffTheArrowItWouldCover) {
+  render::Frame frame{kWidth, kHeight, std::vector<uint8_t>(size_t(kWidth) * kHeight * 4, 255)};
+  render::Overlay overlay;
+  // An arrow running right from the anchor, through where the label would go.
+  const render::ScreenSegment arrow{render::Vec2f(100, 113), render::Vec2f(300, 113)};
+  overlay.labels = {{render::Vec2f(100, 120), "J = 2.41 N\u00b7s", {0.0f, 0.45f, 0.7f}, {arrow}}};
+  render::OverlayPainter painter(kWidth, kHeight);
+  painter.paint(overlay, frame);
+  int inked = 0, inked_on_arrow = 0;
+  for (int y = 90; y < 150; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const uint8_t* p = &frame.rgba[(size_t(y) * kWidth + x) * 4];
+      if (p[2] <= p[0] + 60) continue;
+      ++inked;
+      if (x >= 100 && std::abs(y - 113) <= 2) ++inked_on_arrow;
+    }
+  }
+  EXPECT_GT(inked, 30) << "the label is written";
+  EXPECT_EQ(inked_on_arrow, 0) << "and covers no part of the arrow";
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ render::Overlay lecture_overlay() {
   overlay.playback_highlight = true;
   overlay.legend = {{{0.0f, 0.0f, 0.0f}, "contact point", 0.0f, true},
                     {{0.00f, 0.45f, 0.70f}, "normal impulse: 1 N\u00b7s", 40.0f, false}};
-  overlay.labels = {{render::Vec2f(170.0f, 90.0f), "J = 2.41 N\u00b7s", {0.00f, 0.45f, 0.70f}}};
+  overlay.labels = {{render::Vec2f(170.0f, 90.0f), "J = 2.41 N\u00b7s", {0.00f, 0.45f, 0.70f}, {}}};
   render::Plot energy{.title = "kinetic energy", .unit = "J", .x_end = 2.0f, .y_min = 0.0f, .y_max = 12.0f,
                       .series = {{.colour = {0.90f, 0.62f, 0.00f}, .points = {}}}};
   for (int i = 0; i <= 25; ++i) energy.series[0].points.push_back(render::Vec2f(0.05f * i, 10.0f - 0.3f * i + (i % 5)));

@@ -1,9 +1,12 @@
 // Scene files: good ones load, bad ones are refused with file, line, field and reason.
+#include "demos/scene/rotation_degrees.h"
 #include "demos/scene/scene_file.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <fstream>
 
 namespace impulse::demos {
@@ -77,6 +80,108 @@ TEST(SceneFile, MissingFileIsReported) {
 
 TEST(SceneFile, NoBodiesIsRefused) {
   EXPECT_NE(error_of("[world]\nsubsteps = 4\n").find("no bodies"), std::string::npos);
+}
+
+Scene scene_of(const std::string& text, const std::vector<std::string>& settings = {}) {
+  return load_scene(write_scene(::testing::UnitTest::GetInstance()->current_test_info()->name(), text), settings);
+}
+
+// `rotation` is degrees about x, then y, then z, each about the world axis, right-handed: a
+// positive angle turns counter-clockwise seen from the axis's tip, looking toward the origin.
+TEST(SceneFile, RotationTurnsAboutWorldXThenYThenZRightHanded) {
+  const Scene quarter = scene_of("[[body]]\nshape = \"box\"\nrotation = [0, 0, 90]\n");
+  const physics::Quat z = quarter.bodies[0].orientation;
+  EXPECT_TRUE((z * physics::Vec3::UnitX()).isApprox(physics::Vec3::UnitY(), 1e-12)) << (z * physics::Vec3::UnitX()).transpose();
+  // x first, then y: the body's y axis goes to world +z (x turn), then to world +x (y turn).
+  const Scene both = scene_of("[[body]]\nshape = \"box\"\nrotation = [90, 90, 0]\n");
+  const physics::Quat q = both.bodies[0].orientation;
+  EXPECT_TRUE((q * physics::Vec3::UnitY()).isApprox(physics::Vec3::UnitX(), 1e-12)) << (q * physics::Vec3::UnitY()).transpose();
+  EXPECT_TRUE((q * physics::Vec3::UnitZ()).isApprox(-physics::Vec3::UnitY(), 1e-12)) << (q * physics::Vec3::UnitZ()).transpose();
+}
+
+// sin and cos without libm (the same bits on every machine): exact at multiples of 90 degrees,
+// within 1e-15 of std::sin and std::cos elsewhere (their angle taken within 180 degrees first, as
+// radians far from 0 carry the rounding of degrees times pi/180).
+TEST(SceneFile, SinAndCosOfDegreesAreExactAtRightAnglesAndCloseElsewhere) {
+  for (const double right : {-720.0, -270.0, -180.0, -90.0, 0.0, 90.0, 180.0, 270.0, 360.0, 450.0}) {
+    const auto [s, c] = sin_cos_degrees(right);
+    const int quarter = ((int(right) / 90) % 4 + 4) % 4;
+    EXPECT_EQ(s, (quarter == 1) - (quarter == 3)) << right;
+    EXPECT_EQ(c, (quarter == 0) - (quarter == 2)) << right;
+  }
+  for (double degrees = -725; degrees < 725; degrees += 0.37) {
+    const auto [s, c] = sin_cos_degrees(degrees);
+    const double radians = std::remainder(degrees, 360.0) * std::numbers::pi / 180;
+    EXPECT_NEAR(s, std::sin(radians), 1e-15) << degrees;
+    EXPECT_NEAR(c, std::cos(radians), 1e-15) << degrees;
+  }
+}
+
+// A plane is the points x with normal·x = offset, whatever the normal's length.
+TEST(SceneFile, APlaneHoldsNormalDotXEqualsOffsetForAnyLength) {
+  const Scene scene = scene_of("[[body]]\nshape = \"plane\"\nnormal = [0, 5, 0]\noffset = 1\n");
+  const physics::Shape& plane = scene.bodies[0].shape;
+  EXPECT_EQ(plane.normal, physics::Vec3::UnitY());
+  EXPECT_DOUBLE_EQ(plane.offset, 0.2);
+  const std::string error = error_of("[[body]]\nshape = \"plane\"\n\nnormal = [0, 0, 0]\n");
+  EXPECT_NE(error.find(":4: [[body]] 'body 1' field 'normal': must not be the zero vector"), std::string::npos) << error;
+}
+
+// A ball or hinge joint to the world holds its body at the body's centre unless `anchor` says
+// where; a rod or rope to the world must say where its fixed end is.
+TEST(SceneFile, AJointToTheWorldAnchorsAtTheBodyOrWhereItSays) {
+  const std::string ball = "[[body]]\nname = \"ball\"\nshape = \"sphere\"\nposition = [1, 2, 3]\n";
+  const Scene pinned = scene_of(ball + "[[joint]]\ntype = \"ball\"\nb = \"ball\"\n");
+  EXPECT_EQ(pinned.joints[0].anchor, physics::Vec3(1, 2, 3));
+  const Scene hinged = scene_of(ball + "[[joint]]\ntype = \"hinge\"\na = \"ball\"\nanchor = [0, 2, 0]\n");
+  EXPECT_EQ(hinged.joints[0].anchor, physics::Vec3(0, 2, 0));
+  const Scene rod = scene_of(ball + "[[joint]]\ntype = \"rod\"\nb = \"ball\"\nanchor_a = [1, 4, 3]\n");
+  EXPECT_EQ(rod.joints[0].anchor_a, physics::Vec3(1, 4, 3));
+  EXPECT_EQ(rod.joints[0].anchor_b, physics::Vec3(1, 2, 3));
+  const std::string error = error_of(ball + "[[joint]]\ntype = \"rope\"\nb = \"ball\"\n");
+  EXPECT_NE(error.find(":5: [[joint]] 'joint 1' field 'anchor_a': missing: the fixed point the rope hangs from"),
+            std::string::npos) << error;
+}
+
+// Every kind of check has a bound it can fail: a kind whose bound has no default refuses a check
+// without one, and no kind takes another kind's bound.
+TEST(SceneFile, ACheckThatCannotFailIsRefused) {
+  const std::string ball = "[[body]]\nname = \"ball\"\nshape = \"sphere\"\n";
+  for (const char* kind : {"inside", "velocity", "height"}) {
+    const std::string error = error_of(ball + "[[check]]\nkind = \"" + kind + "\"\nbody = \"ball\"\n");
+    EXPECT_NE(error.find(":4: [[check]] 1 field 'min': missing: "), std::string::npos) << error;
+    EXPECT_NE(error.find("else it cannot fail"), std::string::npos) << error;
+  }
+  // The kinds with a default bound load, each with it.
+  for (const char* kind : {"momentum", "energy", "penetration"})
+    EXPECT_EQ(scene_of(ball + "[[check]]\nkind = \"" + kind + "\"\n").checks.size(), 1u) << kind;
+  for (const char* kind : {"at_rest", "drift"})
+    EXPECT_EQ(scene_of(ball + "[[check]]\nkind = \"" + kind + "\"\nbody = \"ball\"\n").checks.size(), 1u) << kind;
+  EXPECT_NE(error_of(ball + "[[check]]\nkind = \"inside\"\nbody = \"ball\"\nmax = [1, 1, 1]\nspeed = 2\n")
+                .find(":8: [[check]] 1 field 'speed': a check of kind \"inside\" does not use it (its bounds: `min`, `max`)"),
+            std::string::npos);
+  EXPECT_NE(error_of(ball + "[[check]]\nkind = \"height\"\nbody = \"ball\"\nmax = 1\ntolerance = 0.1\n")
+                .find("field 'tolerance': bounds `ratio` only"),
+            std::string::npos);
+  EXPECT_NE(error_of(ball + "[[check]]\nkind = \"energy\"\nbody = \"ball\"\n").find("field 'body': a check of kind \"energy\" is about every body"),
+            std::string::npos);
+}
+
+// --set takes one value: what follows it on a second line, or after it on the line, is refused.
+TEST(SceneFile, ASetValueFollowedByAnythingIsRefused) {
+  const std::string ball = "[[body]]\nname = \"ball\"\nshape = \"sphere\"\n";
+  for (const std::string setting : {"body[ball].mass=1\nrestitution=5", "body[ball].mass=1 kg", "body[ball].mass=[1] 2",
+                                    "body[ball].mass=1\n", "body[ball].mass=true x"}) {
+    try {
+      scene_of(ball, {setting});
+      ADD_FAILURE() << setting << ": accepted";
+    } catch (const SceneError& error) {
+      EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << error.what();
+      EXPECT_EQ(std::string(error.what()).rfind("--set body[ball].mass=", 0), 0u) << error.what();
+    }
+  }
+  EXPECT_EQ(scene_of(ball, {"body[ball].mass=1.5"}).bodies[0].mass, 1.5);
+  EXPECT_EQ(scene_of(ball, {"body[ball].name=big ball"}).bodies[0].name, "big ball");  // a bare word
 }
 
 }  // namespace

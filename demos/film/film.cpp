@@ -49,13 +49,13 @@ render::Colour pane_colour(int pane) {
   return colours[pane % 4];
 }
 
-Film::Film(const std::vector<Pane>& panes, int width, int height) : panes_(panes), frame_height_(height) {
+Film::Film(const std::vector<Pane>& panes, int width, int height, const Shots& shots) : panes_(panes), frame_height_(height) {
   if (panes.empty() || panes.size() > 4) throw std::invalid_argument("a video shows one to four scenes");
   const Scene& first = *panes.front().scene;
   layout_ = pane_layout(int(panes.size()), width, height, !first.overlay.plots.empty());
   std::vector<const Scene*> scenes;
   for (const Pane& pane : panes) scenes.push_back(pane.scene);
-  films_ = SceneFilm::together(scenes, layout_.width, layout_.height);
+  films_ = SceneFilm::together(scenes, layout_.width, layout_.height, shots);
   pictures_.resize(panes.size());
 }
 
@@ -63,6 +63,13 @@ std::vector<std::vector<CheckResult>> Film::check_results() const {
   std::vector<std::vector<CheckResult>> results;
   for (const auto& film : films_) results.push_back(film->check_results());
   return results;
+}
+
+int Film::poster_frame() const {
+  SceneFilm::LabelledPeak peak;
+  for (const auto& film : films_)
+    if (film->labelled_peak().impulse > peak.impulse) peak = film->labelled_peak();
+  return films_.front()->poster_frame(peak);
 }
 
 std::vector<double> Film::impact_times() const {
@@ -78,6 +85,9 @@ void Film::next(FilmPicture& picture) {
     films_[i]->next(pictures_[i]);
     picture.panes[i] = std::move(pictures_[i].draw_list);
   }
+  picture.frame = pictures_.front().frame;
+  picture.time = pictures_.front().time;
+  picture.poses = std::move(pictures_.front().poses);
   if (films_.size() == 1) {
     picture.overlay = std::move(pictures_.front().overlay);
   } else {
@@ -114,10 +124,17 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
   for (size_t i = 0; i < pictures.size(); ++i) {
     const render::Overlay& pane = pictures[i].overlay;
     const render::Vec2f origin = layout_.origins[i].cast<float>();
-    for (const render::OverlayLabel& label : pane.labels) labels.push_back({label.anchor + origin, label.text, label.colour});
+    for (render::OverlayLabel label : pane.labels) {
+      label.anchor += origin;
+      for (render::ScreenSegment& segment : label.avoid) {
+        segment.from += origin;
+        segment.to += origin;
+      }
+      labels.push_back(std::move(label));
+    }
     for (const render::OverlayPanel& panel : pane.panels) panels.push_back(into_pane(panel, origin, scale));
     // Inside its bottom left corner, clear of the title and legend over the first pane's top.
-    labels.push_back({origin + render::Vec2f(-2 * scale, float(layout_.height) - 4 * scale), panes_[i].label, pane_colour(int(i))});
+    labels.push_back({origin + render::Vec2f(-2 * scale, float(layout_.height) - 4 * scale), panes_[i].label, pane_colour(int(i)), {}});
     for (size_t k = 0; k < pane.plots.size(); ++k) {
       if (k == plots.size()) plots.push_back({pane.plots[k].title, pane.plots[k].unit, pane.plots[k].x_end, pane.plots[k].x_start, 0, 0, {}});
       render::Plot& plot = plots[k];

@@ -39,20 +39,27 @@ render::Colour pane_colour(int pane);  // the label's and the plots' colour of e
 struct FilmPicture {
   std::vector<render::DrawList> panes;
   render::Overlay overlay;
+  int frame = -1;               // the video's frame number; -1: a still (Shots)
+  double time = 0;              // simulated s shown
+  std::vector<BodyPose> poses;  // for a still: the first pane's bodies', in the order of bodies()
 };
 
 class Film {
  public:
-  Film(const std::vector<Pane>& panes, int width, int height);  // simulates every scene
+  // Simulates every scene; the pictures are the video's frames, and stills if asked for.
+  Film(const std::vector<Pane>& panes, int width, int height, const Shots& shots = {});
 
-  int frame_count() const { return films_.front()->frame_count(); }
-  int next_frame() const { return films_.front()->next_frame(); }
+  int frame_count() const { return films_.front()->frame_count(); }  // the video's
+  int picture_count() const { return films_.front()->picture_count(); }  // what next() gives
+  int next_frame() const { return films_.front()->next_picture(); }  // the next picture's number
+  const std::vector<physics::Body>& bodies() const { return films_.front()->bodies(); }  // the first pane's
   double video_time_of(double time) const { return films_.front()->video_time_of(time); }
-  int poster_frame() const { return films_.front()->poster_frame(); }
+  // The poster's frame (SceneFilm::poster_frame): the largest labelled impulse of any pane.
+  int poster_frame() const;
   std::vector<double> impact_times() const;  // every pane's, in order: s of simulated time
   const PaneLayout& layout() const { return layout_; }
   std::vector<std::vector<CheckResult>> check_results() const;  // each pane's scene's [[check]]s
-  void next(FilmPicture& picture);  // the next frame, from 0 up to frame_count() - 1
+  void next(FilmPicture& picture);  // the next picture, from 0 up to picture_count() - 1
 
  private:
   void compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay) const;

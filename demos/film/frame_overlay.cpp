@@ -54,7 +54,8 @@ void FrameOverlay::add_label(const FrameState& state, const render::CameraView& 
   std::string text;
   render::Colour colour;
   if (kind == "impulse") {
-    const LabelledImpulse labelled = labelled_impulse(*state.contacts, bodies, label_body_);
+    const std::vector<physics::ContactRecord> marked = marked_contacts(*state.contacts, scene_.draw.marked_pairs);
+    const LabelledImpulse labelled = labelled_impulse(marked, bodies, label_body_);
     const double largest = labelled.contact != nullptr ? labelled.contact->normal_impulse : 0.0;
     // A touching contact that pushes nothing (0.00 N s) is not worth a label.
     if (!(largest >= 0.005 && largest > 1e-3 * summary_.largest_impulse)) return;
@@ -75,7 +76,8 @@ void FrameOverlay::add_label(const FrameState& state, const render::CameraView& 
     colour = mark_colour::velocity;
   } else if (scene_.draw.impulses) {
     // No label asked for, but a cut arrow's length no longer tells its value: write it.
-    const LabelledImpulse labelled = labelled_impulse(*state.contacts, bodies, -1);
+    const std::vector<physics::ContactRecord> marked = marked_contacts(*state.contacts, scene_.draw.marked_pairs);
+    const LabelledImpulse labelled = labelled_impulse(marked, bodies, -1);
     if (labelled.contact == nullptr || !(labelled.contact->normal_impulse * scales_.impulse > scales_.longest_impulse)) return;
     tip = labelled.contact->point.cast<float>() +
           cut_to(impulse_on(*labelled.contact, labelled.body) * float(scales_.impulse), scales_.longest_impulse);
@@ -84,7 +86,14 @@ void FrameOverlay::add_label(const FrameState& state, const render::CameraView& 
   } else {
     return;
   }
-  if (const auto pixels = view.to_pixels(tip)) overlay.labels.push_back({*pixels, text, colour});
+  const auto pixels = view.to_pixels(tip);
+  if (!pixels) return;
+  render::OverlayLabel& label = overlay.labels.emplace_back(render::OverlayLabel{*pixels, text, colour, {}});
+  if (state.arrows == nullptr) return;
+  for (const render::ArrowItem& arrow : *state.arrows) {
+    const auto from = view.to_pixels(arrow.origin), to = view.to_pixels(arrow.origin + arrow.direction);
+    if (from && to) label.avoid.push_back({*from, *to});
+  }
 }
 
 void FrameOverlay::make(const FrameState& state, const PlotRecorder& plots, render::Overlay& overlay) const {

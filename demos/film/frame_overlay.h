@@ -34,6 +34,7 @@ struct FrameState {
   const std::vector<physics::ContactRecord>* contacts = nullptr;
   int64_t plotted_steps = 0;  // steps the plots show
   const ImpactNumbers* impact = nullptr;  // the latest impact, for the equations on screen
+  const std::vector<render::ArrowItem>* arrows = nullptr;  // drawn under the overlay: labels avoid them
   render::Camera camera;
 };
 

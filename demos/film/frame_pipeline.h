@@ -19,6 +19,7 @@
 #include <thread>
 #include <vector>
 
+#include "demos/film/scene_draw_list.h"
 #include "render/frame.h"
 #include "render/overlay.h"
 
@@ -28,6 +29,9 @@ struct FrameJob {
   int64_t index = 0;  // frames are numbered from 0 in submission order
   render::Frame frame;
   render::Overlay overlay;
+  int video_frame = -1;               // the video's frame number; -1: a still (scene_film.h, Shots)
+  double time = 0;                    // simulated s shown
+  std::vector<BodyPose> poses;        // a still's bodies
 };
 
 class FramePipeline {

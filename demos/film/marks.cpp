@@ -69,6 +69,49 @@ double impulse_to_fit(const std::vector<ImpulsePeak>& peaks) {
   return others > 0 && largest.impulse > kOutweighs * others ? others : largest.impulse;
 }
 
+std::vector<physics::ContactRecord> marked_contacts(const std::vector<physics::ContactRecord>& contacts, int max_pairs) {
+  std::vector<physics::ContactRecord> pairs;  // one per pair, in the order pairs first appear
+  std::vector<int> points;
+  for (const physics::ContactRecord& contact : contacts) {
+    auto same = [&](const physics::ContactRecord& p) { return p.body_a == contact.body_a && p.body_b == contact.body_b; };
+    const auto found = std::find_if(pairs.begin(), pairs.end(), same);
+    if (found == pairs.end()) {
+      physics::ContactRecord& pair = pairs.emplace_back(contact);
+      pair.point = contact.point * contact.normal_impulse;
+      points.push_back(1);
+      continue;
+    }
+    const size_t k = size_t(found - pairs.begin());
+    // Sums for now: the point weighted by impulse, the normal; divided below.
+    found->point += contact.point * contact.normal_impulse;
+    found->normal += contact.normal;
+    found->penetration = std::max(found->penetration, contact.penetration);
+    found->normal_impulse += contact.normal_impulse;
+    found->tangent_impulse += contact.tangent_impulse;
+    ++points[k];
+  }
+  if (max_pairs <= 0 || int(pairs.size()) <= max_pairs) return contacts;
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    physics::ContactRecord& pair = pairs[k];
+    if (pair.normal_impulse > 0) {
+      pair.point /= pair.normal_impulse;
+    } else {  // no impulse to weigh by: the points' mean
+      pair.point.setZero();
+      for (const physics::ContactRecord& c : contacts)
+        if (c.body_a == pair.body_a && c.body_b == pair.body_b) pair.point += c.point / points[k];
+    }
+    pair.normal.normalize();
+  }
+  std::vector<int> order(pairs.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = int(k);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return pairs[a].normal_impulse > pairs[b].normal_impulse; });
+  order.resize(size_t(max_pairs));
+  std::sort(order.begin(), order.end());
+  std::vector<physics::ContactRecord> marked;
+  for (const int k : order) marked.push_back(pairs[k]);
+  return marked;
+}
+
 render::Vec3f cut_to(const render::Vec3f& arrow, double longest) {
   const float length = arrow.norm();
   return length > longest ? arrow * float(longest / length) : arrow;

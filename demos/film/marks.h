@@ -45,6 +45,13 @@ struct ImpulsePeak {
 // arrow is cut (ArrowScales::longest_impulse) and its value written beside it.
 double impulse_to_fit(const std::vector<ImpulsePeak>& peaks);
 
+// The contacts whose normals and impulse arrows a frame draws (and whose impulse its label may
+// write). With at most `max_pairs` pairs of bodies in contact (or `max_pairs` 0), `contacts` as
+// they are. Else the `max_pairs` pairs with the largest total normal impulse, each as one record:
+// its points' total impulses at their impulse-weighted centre (their mean without impulse), along
+// their mean normal; in the contacts' order.
+std::vector<physics::ContactRecord> marked_contacts(const std::vector<physics::ContactRecord>& contacts, int max_pairs);
+
 // `arrow` no longer than `longest`.
 render::Vec3f cut_to(const render::Vec3f& arrow, double longest);
 

@@ -1,6 +1,7 @@
 #include "demos/film/render_scene.h"
 
 #include "demos/film/marks.h"
+#include "demos/film/moments.h"
 #include "demos/film/render_types.h"
 #include "demos/film/scene_draw_list.h"
 #include "demos/film/film.h"
@@ -36,8 +37,8 @@ bool wants_png(const RenderOptions& options, int64_t index, int frame_count) {
       if (index == int64_t(k) * (frame_count - 1) / (options.png_spread - 1)) return true;
     return false;
   }
-  return options.png_frames.empty() ||
-         std::find(options.png_frames.begin(), options.png_frames.end(), index) != options.png_frames.end();
+  if (options.png_frames.empty()) return options.moments.empty() && !options.moments_at_impacts;  // all, unless stills
+  return std::find(options.png_frames.begin(), options.png_frames.end(), index) != options.png_frames.end();
 }
 
 }  // namespace
@@ -89,7 +90,8 @@ namespace {
 
 // WebVTT chapters (a player's chapter menu): one at the start, and one at each impact that slows
 // the video, impacts within kChapterGap s after one joining its chapter; or, without such
-// impacts, one at each caption. Returns false (and writes nothing) when there is but one chapter.
+// impacts, one at each caption (a caption at the start names the first chapter). Returns false
+// (and writes nothing) when there is neither an impact nor a caption.
 constexpr double kChapterGap = 0.5;
 
 bool write_chapters(const Scene& scene, const Film& film, const std::string& path) {
@@ -102,10 +104,15 @@ bool write_chapters(const Scene& scene, const Film& film, const std::string& pat
     std::snprintf(title, sizeof title, "Impact at t = %.2f s", time);
     starts.emplace_back(time, title);
   }
-  if (starts.size() == 1)
-    for (const CaptionCue& caption : scene.captions)
-      if (caption.start > starts.back().first) starts.emplace_back(caption.start, caption.text);
-  if (starts.size() < 2) return false;
+  bool named = starts.size() > 1;
+  if (!named) {
+    for (const CaptionCue& caption : scene.captions) {
+      if (caption.start < 1e-9 && !named) starts.front().second = caption.text;
+      else if (caption.start > starts.back().first) starts.emplace_back(caption.start, caption.text);
+      named = true;
+    }
+  }
+  if (!named) return false;
   render::PartFile part(path);
   {
     std::ofstream file(part.part_path());
@@ -130,6 +137,10 @@ std::string frame_file(const std::string& directory, int64_t index) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%05lld.png", static_cast<long long>(index));
   return (std::filesystem::path(directory) / name).string();
+}
+
+std::string still_file(const std::string& directory, double time) {
+  return (std::filesystem::path(directory) / (moment_name(time) + ".png")).string();
 }
 
 render::DrawList make_draw_list(const Scene& scene, const physics::World& world, const physics::StepRecord& record) {
@@ -167,7 +178,14 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   // The output first: a path that cannot be written is refused before any simulation.
   std::unique_ptr<render::VideoEncoder> encoder;
   if (!options.video_path.empty()) encoder = std::make_unique<render::VideoEncoder>(options.video_path, video);
-  Film film(panes, video.width, video.height);
+  Shots shots;
+  shots.stills = options.moments;
+  shots.stills_at_impacts = options.moments_at_impacts;
+  const bool stills_only = !shots.stills.empty() || shots.stills_at_impacts;
+  shots.video_frames = encoder || !options.poster_path.empty() ||
+                       (!options.png_directory.empty() && (!stills_only || !options.png_frames.empty() || options.png_spread > 1));
+  // (without a video, poster or frame PNGs, the frames are simulated but not drawn)
+  Film film(panes, video.width, video.height, shots);
   const PaneLayout& layout = film.layout();
   render::Renderer renderer(layout.width, layout.height, options.renderer);
   if (!options.png_directory.empty()) std::filesystem::create_directories(options.png_directory);
@@ -177,10 +195,18 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   // it stops before the encoder (and its .part file) goes.
   render::OverlayPainter painter(video.width, video.height);
   std::atomic<int> frames_finished{0};
+  render::Frame poster_frame;  // kept until the video is complete: a poster only ever sits beside its video
   FramePipeline pipeline(kFramesInFlight, [&](FrameJob& job) {
     painter.paint(job.overlay, job.frame);
-    if (wants_png(options, job.index, film.frame_count())) render::write_png(frame_file(options.png_directory, job.index), job.frame);
-    if (!options.poster_path.empty() && job.index == poster) render::write_png(options.poster_path, job.frame);
+    if (job.video_frame < 0) {  // a still
+      if (!options.png_directory.empty()) render::write_png(still_file(options.png_directory, job.time), job.frame);
+      if (options.on_still) options.on_still(job.time, job.frame, job.poses);
+      ++frames_finished;
+      return;
+    }
+    if (wants_png(options, job.video_frame, film.frame_count()))
+      render::write_png(frame_file(options.png_directory, job.video_frame), job.frame);
+    if (!options.poster_path.empty() && job.video_frame == poster) poster_frame = job.frame;
     if (encoder) encoder->add_frame(job.frame);
     ++frames_finished;
   });
@@ -188,7 +214,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   HandoffQueue<FilmPicture> pictures(kPicturesAhead);
   std::thread simulation([&] {
     try {
-      while (film.next_frame() < film.frame_count()) {
+      while (film.next_frame() < film.picture_count()) {
         FilmPicture picture;
         film.next(picture);
         if (!pictures.push(std::move(picture))) return;  // the drawing stopped
@@ -221,13 +247,17 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
       }
     }
     job.overlay = std::move(picture->overlay);
+    job.video_frame = picture->frame;
+    job.time = picture->time;
+    job.poses = std::move(picture->poses);
     pipeline.submit();
-    if (options.progress) options.progress(frames_finished, film.frame_count());
+    if (options.progress) options.progress(frames_finished, film.picture_count());
   }
   pipeline.finish();
   if (encoder) encoder->finish();
   if (encoder && !scene.captions.empty()) write_captions(scene, film, captions_path(options.video_path));
   if (encoder) write_chapters(scene, film, chapters_path(options.video_path));
+  if (!options.poster_path.empty() && !poster_frame.rgba.empty()) render::write_png(options.poster_path, poster_frame);
   return film.check_results();
 }
 

@@ -20,7 +20,12 @@ struct RenderOptions {
   std::string png_directory;     // empty: no PNG frames
   std::vector<int> png_frames;   // which frames become PNGs (numbered from 0); empty: all
   int png_spread = 0;            // > 1 (and no png_frames): that many, evenly from the first to the last
-  std::string poster_path;       // .png of a frame where something happens (SceneFilm::poster_frame); empty: none
+  std::vector<double> moments;   // stills at these simulated s: PNG t_0.500.png in png_directory, and `on_still`
+  bool moments_at_impacts = false;  // and one at each impact that slows the video
+  // Called with each still (overlaid), on the thread that finishes frames, in order of time.
+  std::function<void(double time, const render::Frame& frame, const std::vector<BodyPose>& poses)> on_still;
+  std::string poster_path;       // .png of a frame where something happens (SceneFilm::poster_frame), written once
+                                 // the video is complete; empty: none
   // Called after each frame is drawn, with the frames finished and the frame count.
   std::function<void(int frames_done, int frame_count)> progress;
   render::RendererSettings renderer;
@@ -45,5 +50,7 @@ std::string poster_path(const std::string& video_path);
 
 // The name a frame's PNG gets: DIRECTORY/frame_00042.png.
 std::string frame_file(const std::string& directory, int64_t index);
+// The name a still's PNG gets: DIRECTORY/t_0.500.png (its moment, to the millisecond).
+std::string still_file(const std::string& directory, double time);
 
 }  // namespace impulse::demos

@@ -2,6 +2,8 @@
 
 #include "demos/film/render_types.h"
 
+#include <algorithm>
+
 namespace impulse::demos {
 namespace {
 
@@ -37,6 +39,12 @@ void add_joints(render::DrawList& list, const std::vector<BodyPose>& poses, cons
     if (joint.body_a == physics::kWorld && joint.type == physics::JointType::distance)
       list.points.push_back({a, mark_colour::joint, 4.0f});
   }
+}
+
+// A mark's colour, faded towards white: the arrows of a resting contact beside a hit.
+render::Colour faint(const render::Colour& colour) {
+  constexpr float kFade = 0.6f;
+  return {colour.r + (1 - colour.r) * kFade, colour.g + (1 - colour.g) * kFade, colour.b + (1 - colour.b) * kFade};
 }
 
 }  // namespace
@@ -101,21 +109,28 @@ render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::
   }
 
   add_joints(list, poses, joints);
-  for (const physics::ContactRecord& contact : contacts) {
+  if (draw.contact_points)
+    for (const physics::ContactRecord& contact : contacts) list.points.push_back({to_float(contact.point), mark_colour::contact_point, 4.0f});
+  const std::vector<physics::ContactRecord> marked = marked_contacts(contacts, draw.marked_pairs);
+  double strongest = 0;
+  for (const physics::ContactRecord& contact : marked) strongest = std::max(strongest, contact.normal_impulse);
+  for (const physics::ContactRecord& contact : marked) {
     const render::Vec3f point = to_float(contact.point);
     if (draw.contact_normals)
       add_arrow(list, point, to_float(contact.normal) * float(scales.normal_length), mark_colour::contact_normal, normal_layer);
+    const bool resting = contact.normal_impulse < draw.faint_below * strongest;
+    const render::Colour normal_colour = resting ? faint(mark_colour::normal_impulse) : mark_colour::normal_impulse;
+    const render::Colour friction_colour = resting ? faint(mark_colour::friction_impulse) : mark_colour::friction_impulse;
     for (int body : {contact.body_a, contact.body_b}) {
       if (!moves(bodies, body)) continue;
       const float sign = body == contact.body_a ? 1.0f : -1.0f;
       if (draw.impulses)
         add_arrow(list, point, cut_to(impulse_on(contact, body) * float(scales.impulse), scales.longest_impulse),
-                  mark_colour::normal_impulse, impulse_layer);
+                  normal_colour, impulse_layer);
       if (draw.friction)
         add_arrow(list, point, cut_to(sign * to_float(contact.tangent_impulse) * float(scales.impulse), scales.longest_impulse),
-                  mark_colour::friction_impulse, friction_layer);
+                  friction_colour, friction_layer);
     }
-    if (draw.contact_points) list.points.push_back({point, mark_colour::contact_point, 4.0f});
   }
   return list;
 }

@@ -1,24 +1,30 @@
 #include "demos/film/scene_film.h"
 
+#include "demos/film/moments.h"
+
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "demos/film/captions.h"
 
 namespace impulse::demos {
 
 SceneFilm::SceneFilm(const Scene& scene) : scene_(scene), take_(scene), camera_path_(scene), bodies_(take_.bodies()) {}
 
-SceneFilm::SceneFilm(const Scene& scene, int width, int height) : SceneFilm(scene) {
-  shoot({this});
+SceneFilm::SceneFilm(const Scene& scene, int width, int height, const Shots& shots) : SceneFilm(scene) {
+  shoot({this}, shots);
   develop(width, height, take_.summary());
 }
 
 std::vector<std::unique_ptr<SceneFilm>> SceneFilm::together(const std::vector<const Scene*>& scenes, int width,
-                                                            int height) {
+                                                            int height, const Shots& shots) {
   std::vector<std::unique_ptr<SceneFilm>> films;
   std::vector<SceneFilm*> shot;
   for (const Scene* scene : scenes) shot.push_back(films.emplace_back(new SceneFilm(*scene)).get());
   if (shot.empty()) return films;
-  shoot(shot);
+  shoot(shot, shots);
   // One scale for the arrows and the plots of every film, so that their lengths compare.
   TakeSummary largest;
   for (const SceneFilm* film : shot) {
@@ -43,6 +49,20 @@ std::vector<std::unique_ptr<SceneFilm>> SceneFilm::together(const std::vector<co
 
 void SceneFilm::develop(int width, int height, const TakeSummary& summary) {
   impact_times_ = summary.impact_times;
+  labelled_peak_ = {};
+  const bool label_written = scene_.overlay.label == "impulse";
+  if (label_written || scene_.draw.impulses) {
+    const int body = label_written ? label_body(scene_) : -1;
+    for (size_t i = 0; i < samples_.size(); ++i) {
+      if (moments_[i].frame < 0) continue;  // a still, not a frame of the video
+      const std::vector<physics::ContactRecord> marked = marked_contacts(samples_[i].contacts, scene_.draw.marked_pairs);
+      const LabelledImpulse labelled = labelled_impulse(marked, bodies_, body);
+      // As the label: 0.005 N s and more (frame_overlay.cpp).
+      if (labelled.contact != nullptr && labelled.contact->normal_impulse >= 0.005 &&
+          labelled.contact->normal_impulse > labelled_peak_.impulse)
+        labelled_peak_ = {moments_[i].frame, labelled.contact->normal_impulse};
+    }
+  }
   scales_ = arrow_scales(scene_, summary);
   overlay_maker_.emplace(scene_, summary, scales_, width, height);
   std::vector<const ImpactNumbers*> impacts;
@@ -50,13 +70,32 @@ void SceneFilm::develop(int width, int height, const TakeSummary& summary) {
   overlay_maker_->prepare(impacts);
 }
 
+namespace {
+
+// An impact's still: the first whole millisecond at or after it, so that its name (t_0.984.png)
+// is its moment and the step of the impact is shown.
+double still_after(double impact) { return std::ceil(impact * 1000 - 1e-6) / 1000; }
+
+}  // namespace
+
+void SceneFilm::add_moment(const Moment& moment, double video_time) {
+  moments_.push_back(moment);
+  take_.sample(moment.time, video_time, samples_.emplace_back());
+  if (moment.frame >= 0) ++frame_count_;
+  if (moment.drawn) ++picture_count_;
+}
+
 // Steps the worlds to their end, and samples each frame as soon as every world is far enough past
-// its moment that no impact to come can change the playback speed there.
-void SceneFilm::shoot(const std::vector<SceneFilm*>& films) {
+// its moment that no impact to come can change the playback speed there; the stills between two
+// frames right after the first of them.
+void SceneFilm::shoot(const std::vector<SceneFilm*>& films, const Shots& shots) {
   const Scene& first = films.front()->scene_;
   PlaybackTimeline timeline(first.playback, first.duration, first.video.fps);
+  std::vector<double> stills = shots.stills;  // sorted, those still to take
+  std::sort(stills.begin(), stills.end());
   std::vector<size_t> impacts_known(films.size(), 0);
   double time = 0;  // the next frame's moment
+  int frame = 0;
   bool more = true;
   while (more) {
     for (size_t i = 0; i < films.size(); ++i) {
@@ -64,42 +103,89 @@ void SceneFilm::shoot(const std::vector<SceneFilm*>& films) {
       while (!take.finished() && take.time() < time + timeline.lookahead()) {
         take.step();
         const std::vector<double>& impacts = take.summary().impact_times;
-        for (; impacts_known[i] < impacts.size(); ++impacts_known[i]) timeline.add_impact(impacts[impacts_known[i]]);
+        for (; impacts_known[i] < impacts.size(); ++impacts_known[i]) {
+          timeline.add_impact(impacts[impacts_known[i]]);
+          const double still = still_after(impacts[impacts_known[i]]);
+          if (shots.stills_at_impacts && !std::binary_search(stills.begin(), stills.end(), still))
+            stills.insert(std::upper_bound(stills.begin(), stills.end(), still), still);
+        }
       }
     }
-    const double video_time = double(films.front()->moments_.size()) / first.video.fps;
-    const Moment moment{time, timeline.speed_at(time), timeline.slow_motion_at(time)};
-    for (SceneFilm* film : films) {
-      film->moments_.push_back(moment);
-      film->take_.sample(time, video_time, film->samples_.emplace_back());
-    }
+    const double video_time = double(frame) / first.video.fps;
+    const Moment moment{time, timeline.speed_at(time), timeline.slow_motion_at(time), frame++, shots.video_frames};
+    for (SceneFilm* film : films) film->add_moment(moment, video_time);
     const bool shown = timeline.shows(time);
-    time = timeline.next_frame_time(time);
-    more = shown && timeline.shows(time) && films.front()->moments_.size() < 10'000'000;
+    const double next = timeline.next_frame_time(time);
+    more = shown && timeline.shows(next) && frame < 10'000'000;
+    // The stills before the next frame (after the last frame: the rest), each at its moment of video.
+    while (!stills.empty() && stills.front() >= time - 1e-9 && stills.front() <= first.duration + 1e-9 &&
+           (stills.front() < next - 1e-9 || !more)) {
+      const double still = stills.front();
+      if (more) {
+        const Moment at{still, timeline.speed_at(still), timeline.slow_motion_at(still), -1, true};
+        for (SceneFilm* film : films) film->add_moment(at, video_time + (still - time) / (next - time) / first.video.fps);
+      } else {  // past the last frame: the world must be stepped up to it
+        for (SceneFilm* film : films)
+          while (!film->take_.finished() && film->take_.time() < still - 1e-9) film->take_.step();
+        const Moment at{still, timeline.speed_at(still), timeline.slow_motion_at(still), -1, true};
+        for (SceneFilm* film : films) film->add_moment(at, double(frame) / first.video.fps);
+      }
+      stills.erase(stills.begin());
+    }
+    time = next;
   }
+  if (!stills.empty())
+    throw std::invalid_argument("a still at t = " + moment_name(stills.front()).substr(2) + " s is past the scene's end (" +
+                                moment_name(first.duration).substr(2) + " s): --at takes moments from 0 to the duration");
   for (SceneFilm* film : films)
     while (!film->take_.finished()) film->take_.step();  // the summary covers the whole duration
 }
 
 double SceneFilm::video_time_of(double time) const {
-  const auto shown = std::find_if(moments_.begin(), moments_.end(), [&](const Moment& m) { return m.time >= time - 1e-9; });
-  return double(shown - moments_.begin()) / scene_.video.fps;
+  const auto shown = std::find_if(moments_.begin(), moments_.end(),
+                                  [&](const Moment& m) { return m.frame >= 0 && m.time >= time - 1e-9; });
+  return double(shown == moments_.end() ? frame_count_ : shown->frame) / scene_.video.fps;
 }
 
-int SceneFilm::poster_frame() const {
-  if (impact_times_.empty()) return frame_count() / 2;
-  const int after = int(std::lround((video_time_of(impact_times_.front()) + 0.25) * scene_.video.fps));
-  return std::clamp(after, 0, frame_count() - 1);
+int SceneFilm::poster_frame(const LabelledPeak& peak) const {
+  int frame = frame_count() / 2;
+  if (scene_.playback.poster) {
+    frame = int(std::lround(video_time_of(*scene_.playback.poster) * scene_.video.fps));
+  } else if (peak.frame >= 0) {
+    frame = peak.frame;
+  } else if (!impact_times_.empty()) {
+    frame = int(std::lround((video_time_of(impact_times_.front()) + 0.25) * scene_.video.fps));
+  }
+  frame = std::clamp(frame, 0, frame_count() - 1);
+  std::vector<double> frame_times;  // simulated s each frame of the video shows
+  for (const Moment& moment : moments_)
+    if (moment.frame >= 0) frame_times.push_back(moment.time);
+  const auto fading = [&](int f) {
+    for (const render::Caption& caption : captions_at(scene_.captions, frame_times[size_t(f)]))
+      if (caption.opacity < 1) return true;
+    return false;
+  };
+  for (int distance = 0; distance < frame_count(); ++distance)
+    for (const int f : {frame + distance, frame - distance})
+      if (f >= 0 && f < frame_count() && !fading(f)) return f;
+  return frame;
 }
 
 void SceneFilm::next(ScenePicture& picture) {
-  const Moment& moment = moments_[frame_];
-  FrameSample& sample = samples_[frame_];
+  // Frames not shot: only the camera moves on (following is smoothed frame to frame).
+  const int followed = camera_path_.followed_body();
+  for (; moment_ < moments_.size() && !moments_[moment_].drawn; ++moment_) {
+    const FrameSample& sample = samples_[moment_];
+    camera_path_.at(moments_[moment_].time, followed >= 0 ? sample.poses[followed].position : physics::Vec3::Zero());
+    samples_[moment_] = FrameSample{};
+  }
+  if (moment_ >= moments_.size()) throw std::logic_error("SceneFilm::next: no picture left");
+  const Moment& moment = moments_[moment_];
+  FrameSample& sample = samples_[moment_];
   for (size_t i = 0; i < bodies_.size(); ++i) {
     bodies_[i].velocity = sample.velocities[i];
     bodies_[i].awake = sample.awake[i] != 0;
   }
-  const int followed = camera_path_.followed_body();
   FrameState state;
   state.time = moment.time;
   state.speed = moment.speed;
@@ -113,9 +199,14 @@ void SceneFilm::next(ScenePicture& picture) {
 
   picture.draw_list =
       scene_draw_list(scene_, bodies_, sample.poses, take_.joints(), sample.contacts, scales_, state.camera);
+  state.arrows = &picture.draw_list.arrows;
   overlay_maker_->make(state, take_.plots(), picture.overlay);
+  picture.frame = moment.frame;
+  picture.time = moment.time;
+  if (moment.frame < 0) picture.poses = sample.poses;
   sample = FrameSample{};  // its memory is no longer needed
-  ++frame_;
+  ++moment_;
+  ++picture_;
 }
 
 }  // namespace impulse::demos

@@ -23,32 +23,58 @@
 
 namespace impulse::demos {
 
+// Which pictures a film gives, in order of simulated time: the video's frames, and stills at
+// chosen moments between them (for `impulse verify` and `render --at`), which are no part of the
+// video. A still shows its exact moment whatever the frame rate; what is held on screen for some
+// seconds of video (contacts) is counted as the video would count it.
+struct Shots {
+  bool video_frames = true;
+  std::vector<double> stills;      // s of simulated time, 0 .. the duration
+  bool stills_at_impacts = false;  // also one at each impact that slows the video (the ms after it)
+};
+
 struct ScenePicture {
   render::DrawList draw_list;
   render::Overlay overlay;
+  int frame = -1;                   // the video's frame number; -1: a still
+  double time = 0;                  // simulated s shown
+  std::vector<BodyPose> poses;      // every body's, for a still
 };
 
 class SceneFilm {
  public:
   // Simulates the whole scene. `scene` must outlive the film.
-  SceneFilm(const Scene& scene, int width, int height);
+  SceneFilm(const Scene& scene, int width, int height, const Shots& shots = {});
   // Several scenes, each simulated once, their worlds stepped side by side and every film shown at
   // the same moments: the first scene's playback, duration and frame rate, slowed around an impact
   // of any of them, with one arrow scale and plot range for all (a comparison, film.h).
   static std::vector<std::unique_ptr<SceneFilm>> together(const std::vector<const Scene*>& scenes, int width,
-                                                          int height);
+                                                          int height, const Shots& shots = {});
 
-  int frame_count() const { return int(moments_.size()); }
+  int frame_count() const { return frame_count_; }  // the video's
+  int picture_count() const { return picture_count_; }  // what next() gives: the frames (if shot) and stills
+  int next_picture() const { return picture_; }
   // Seconds into the video at which simulated time `time` is first shown (slow motion included);
   // the video's length for a time past the last frame.
   double video_time_of(double time) const;
-  // A frame where something happens, for a poster: a quarter second of video after the first
-  // impact that slows the video, else the middle frame.
-  int poster_frame() const;
+  // The largest impulse the "impulse" label writes in any frame (without that label, the largest
+  // impulse arrow on a moving body), and the first frame that shows it; frame -1 when none shows.
+  struct LabelledPeak {
+    int frame = -1;
+    double impulse = 0;
+  };
+  LabelledPeak labelled_peak() const { return labelled_peak_; }
+  // The frame that teaches, for a poster: the first frame showing [playback] poster's moment when
+  // it is set; else `peak`'s frame (the run's largest labelled impulse); else a quarter second of
+  // video after the first impact that slows the video; else the middle frame. A frame where a
+  // caption fades in or out gives way to the nearest one where none does.
+  int poster_frame(const LabelledPeak& peak) const;
+  int poster_frame() const { return poster_frame(labelled_peak_); }
   const std::vector<double>& impact_times() const { return impact_times_; }  // s: those that slow the video
   std::vector<CheckResult> check_results() const { return take_.check_results(); }
-  int next_frame() const { return frame_; }
-  // Fills `picture` with the next frame (from 0 up to frame_count() - 1).
+  // The bodies as built: names, shapes (their motion is in the pictures).
+  const std::vector<physics::Body>& bodies() const { return take_.bodies(); }
+  // Fills `picture` with the next picture (from 0 up to picture_count() - 1).
   void next(ScenePicture& picture);
 
  private:
@@ -56,9 +82,12 @@ class SceneFilm {
     double time = 0;   // simulated s shown
     double speed = 1;  // playback factor then
     bool slow_motion = false;
+    int frame = -1;     // the video's frame number; -1: a still
+    bool drawn = true;  // a picture next() gives (a frame not shot only moves the camera on)
   };
   explicit SceneFilm(const Scene& scene);   // not yet shot
-  static void shoot(const std::vector<SceneFilm*>& films);
+  static void shoot(const std::vector<SceneFilm*>& films, const Shots& shots);
+  void add_moment(const Moment& moment, double video_time);
   // Once shot: the arrow scales and the overlay's axes that `summary` (the run's, or the largest of
   // films shown together) fixes.
   void develop(int width, int height, const TakeSummary& summary);
@@ -70,9 +99,11 @@ class SceneFilm {
   ArrowScales scales_;
   std::optional<FrameOverlay> overlay_maker_;
   std::vector<double> impact_times_;
+  LabelledPeak labelled_peak_;
   CameraPath camera_path_;
   std::vector<physics::Body> bodies_;  // the take's, moved to each frame's sample
-  int frame_ = 0;
+  size_t moment_ = 0;  // the next one next() looks at
+  int frame_count_ = 0, picture_count_ = 0, picture_ = 0;
 };
 
 }  // namespace impulse::demos

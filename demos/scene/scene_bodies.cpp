@@ -1,10 +1,10 @@
 // [world], [[body]] and [[joint]]: what the physics simulates.
+#include "demos/scene/rotation_degrees.h"
 #include "demos/scene/scene_overrides.h"
 #include "demos/scene/scene_sections.h"
 
 #include <cmath>
 #include <iterator>
-#include <numbers>
 #include <stdexcept>
 
 namespace impulse::demos {
@@ -13,13 +13,6 @@ namespace {
 
 using physics::Real;
 using physics::Vec3;
-
-// Degrees about x, then y, then z (each about the world axis).
-physics::Quat rotation_from_degrees(const Vec3& degrees) {
-  const Vec3 r = degrees * (std::numbers::pi / 180);
-  using Turn = Eigen::AngleAxis<Real>;
-  return physics::Quat(Turn(r.z(), Vec3::UnitZ()) * Turn(r.y(), Vec3::UnitY()) * Turn(r.x(), Vec3::UnitX()));
-}
 
 // Appends a body after the engine's own checks, reported at the table's line.
 void add_body(TableReader& r, const physics::BodyDef& def, Colour colour, Scene& scene) {
@@ -46,9 +39,13 @@ void read_body(const toml::table& table, const std::string& path, int index, Sce
     if (!(size.minCoeff() > 0)) r.fail(r.get("size"), "size", "every edge must be > 0 (metres: [x, y, z])");
     def.shape = physics::Shape::box(size / 2);
   } else if (shape == "plane") {
+    // The points x with normal·x = offset, for a normal of any length: the plane lies offset/|normal|
+    // from the origin along it.
     const Vec3 normal = r.vec3("normal", Vec3::UnitY());
-    if (normal.norm() < 1e-9) r.fail(r.get("normal"), "normal", "must not be the zero vector");
-    def.shape = physics::Shape::plane(normal.normalized(), r.number("offset", 0));
+    if (!(normal.norm() >= 1e-6))
+      r.fail(r.get("normal"), "normal", "must not be the zero vector: it points out of the solid side, like [0, 1, 0]");
+    const Real offset = r.number("offset", 0);
+    def.shape = physics::Shape::plane(normal / normal.norm(), offset / normal.norm());
     def.is_static = true;
   }
   def.is_static = r.boolean("static", def.is_static);
@@ -61,7 +58,7 @@ void read_body(const toml::table& table, const std::string& path, int index, Sce
   def.orientation = rotation_from_degrees(r.vec3("rotation", Vec3::Zero()));
   def.velocity = r.vec3("velocity", def.velocity, kFastest, "m/s", kFastestWhy);
   def.angular_velocity = r.vec3("angular_velocity", def.angular_velocity, kFastestSpin, "rad/s", kFastestSpinWhy);
-  const Colour colour = r.colour("colour", kBodyPalette[index % std::size(kBodyPalette)]);
+  const Colour colour = r.colour("colour", def.is_static ? kStaticColour : kBodyPalette[index % std::size(kBodyPalette)]);
   r.finish();
   add_body(r, def, colour, scene);
 }
@@ -128,15 +125,24 @@ void read_joints(TableReader& top, Scene& scene) {
     def.body_b = body_index(r, scene, "b");
     if (def.body_a == def.body_b) r.fail(r.get("b"), "b", "a joint joins two different bodies");
     if (type == "ball" || type == "hinge") {
+      // The shared point: by default the centre of `a` (of `b` when `a` is the world), so that a
+      // body pinned to the world turns about its own centre.
       def.type = type == "ball" ? physics::JointType::ball : physics::JointType::hinge;
-      def.anchor = r.vec3("anchor", Vec3::Zero());
+      const int pinned = def.body_a == physics::kWorld ? def.body_b : def.body_a;
+      def.anchor = r.vec3("anchor", scene.bodies[pinned].position);
       if (type == "hinge") def.axis = r.vec3("axis", Vec3::UnitZ());
     } else {
+      // Each end at its body's centre by default; the world has none, so its end is given.
       def.type = physics::JointType::distance;
       def.rope = type == "rope";
-      auto centre = [&](int body) { return body == physics::kWorld ? Vec3::Zero() : scene.bodies[body].position; };
-      def.anchor_a = r.vec3("anchor_a", centre(def.body_a));
-      def.anchor_b = r.vec3("anchor_b", centre(def.body_b));
+      auto end = [&](int body, const char* key) {
+        if (body != physics::kWorld) return r.vec3(key, scene.bodies[body].position);
+        if (!r.has(key))
+          r.fail(nullptr, key, std::string("missing: the fixed point the ") + type + " hangs from (world coordinates, m), like [0, 2, 0]");
+        return r.vec3(key, Vec3::Zero());
+      };
+      def.anchor_a = end(def.body_a, "anchor_a");
+      def.anchor_b = end(def.body_b, "anchor_b");
       def.length = r.number("length", 0, 0);  // 0: the distance between the anchors
     }
     r.finish();

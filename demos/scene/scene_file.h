@@ -30,6 +30,12 @@ struct DrawOptions {
   bool velocities = false;       // each moving body's velocity, as an arrow from its centre
   float velocity_scale = 0.0f;   // m of arrow per m/s; 0: chosen so the fastest body's is about 1.5 m
   bool sleeping = true;          // sleeping bodies pale and hatched
+  // Busy scenes: a frame with more pairs of bodies in contact than `marked_pairs` (0: no limit)
+  // draws normals and impulse arrows only for that many, the strongest, each pair's points as one
+  // mark (marks.h); arrows of impulses below `faint_below` times the frame's strongest drawn faint
+  // (a resting contact beside a hit; 0: none).
+  int marked_pairs = 4;
+  float faint_below = 0.25f;
 };
 
 // [compare] (or --vary): the scene shown as two to four panes side by side, one per value of one

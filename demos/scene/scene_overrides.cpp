@@ -1,7 +1,9 @@
 #include "demos/scene/scene_overrides.h"
 
 #include <algorithm>
+#include <cctype>
 #include <sstream>
+#include <string_view>
 
 #include "demos/scene/scene_file.h"
 
@@ -12,8 +14,16 @@ namespace {
 const std::vector<std::string> kTables = {"scene", "world", "camera", "video", "draw", "overlay", "playback", "compare"};
 const std::vector<std::string> kLists = {"body", "joint", "caption", "equation", "pyramid", "lattice", "check"};
 
+// The argument as a message shows it: a line break or tab written as \n or \t, so the message
+// stays one line.
+std::string shown(const std::string& argument) {
+  std::string text;
+  for (char c : argument) text += c == '\n' ? "\\n" : c == '\r' ? "\\r" : c == '\t' ? "\\t" : std::string(1, c);
+  return text;
+}
+
 [[noreturn]] void refuse(const std::string& argument, const std::string& reason) {
-  throw SceneError("--set " + argument + ": " + reason);
+  throw SceneError("--set " + shown(argument) + ": " + reason);
 }
 
 size_t edit_distance(const std::string& a, const std::string& b) {
@@ -31,12 +41,30 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-// The value as a TOML node, parsed as a scene file's value is.
+// Whether `text` begins as a TOML value does (a number, a list, a table, a quoted string, true,
+// false, inf, nan): then it must be exactly one, never a bare word.
+bool looks_like_toml(const std::string& text) {
+  if (text.empty()) return false;
+  if (std::string_view("0123456789+-.[{\"'").find(text[0]) != std::string_view::npos) return true;
+  for (const std::string_view word : {"true", "false", "inf", "nan"})
+    if (text.starts_with(word) && (text.size() == word.size() || !std::isalnum(static_cast<unsigned char>(text[word.size()]))))
+      return true;
+  return false;
+}
+
+// The value as a TOML node, parsed as a scene file's value is. It is exactly one value: anything
+// after it (a line break and a second assignment, trailing words) is refused, never dropped.
 toml::node_view<toml::node> parse_value(toml::table& holder, const std::string& argument, const std::string& text) {
+  if (const size_t end = text.find_first_of("\r\n"); end != std::string::npos)
+    refuse(argument, "a value is one line, and a line break follows '" + shown(text.substr(0, end)) +
+                         "'; give each field its own --set");
   const std::string source = "--set " + argument;
   try {
     holder = toml::parse("value = " + text, source);
-  } catch (const toml::parse_error&) {
+  } catch (const toml::parse_error& error) {
+    if (looks_like_toml(text))
+      refuse(argument, "cannot read the value '" + text + "': " + std::string(error.description()) +
+                           " (write one value, like 0.2, false, [0, 1, 0] or \"text\")");
     std::string quoted = "\"";
     for (char c : text) {
       if (c == '"' || c == '\\') quoted += '\\';
@@ -44,10 +72,11 @@ toml::node_view<toml::node> parse_value(toml::table& holder, const std::string& 
     }
     try {
       holder = toml::parse("value = " + quoted + "\"", source);  // a bare word: a string
-    } catch (const toml::parse_error& error) {
-      refuse(argument, std::string("cannot read the value: ") + std::string(error.description()));
+    } catch (const toml::parse_error& bare_error) {
+      refuse(argument, std::string("cannot read the value: ") + std::string(bare_error.description()));
     }
   }
+  if (holder.size() != 1) refuse(argument, "more than one value; give each field its own --set");
   return holder["value"];
 }
 

@@ -6,8 +6,9 @@
 //   video.quality=low      caption[1].text=Hello     camera.position=[0, 2, 8]
 //
 // KEY is a path of table names; [[body]], [[joint]] and the other lists of tables take an index
-// from 0 or, where the tables have names, a name in brackets. VALUE is written as in a scene file
-// (false, 0.2, [0, 1, 0], "projection"); a bare word is taken as a string.
+// from 0 or, where the tables have names, a name in brackets. VALUE is one value written as in a
+// scene file (false, 0.2, [0, 1, 0], "projection"); a bare word is taken as a string. Anything
+// after the value (a line break and a second assignment, words after a number) is refused.
 #pragma once
 #include <toml++/toml.h>
 

@@ -11,6 +11,9 @@ namespace impulse::demos {
 inline constexpr Colour kBodyPalette[] = {{0.90f, 0.62f, 0.00f}, {0.34f, 0.71f, 0.91f}, {0.00f, 0.62f, 0.45f},
                                           {0.80f, 0.47f, 0.65f}, {0.00f, 0.45f, 0.70f}, {0.94f, 0.89f, 0.26f}};
 inline constexpr size_t kRowColourCount = 5;
+// Static bodies without a colour of their own (a wall, a ramp): a neutral grey, so that the eye
+// goes to what moves.
+inline constexpr Colour kStaticColour{0.62f, 0.63f, 0.66f};
 
 // Absurd magnitudes are refused, with the reason: what a lecture's scene needs is far below them,
 // and above them the numbers stop meaning what they say.

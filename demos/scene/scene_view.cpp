@@ -91,6 +91,8 @@ void read_draw(TableReader& top, Scene& scene) {
   d.velocities = r.boolean("velocities", d.velocities);
   d.velocity_scale = float(r.number("velocity_scale", d.velocity_scale, 0, 1e6));
   d.sleeping = r.boolean("sleeping", d.sleeping);
+  d.marked_pairs = r.integer("marked_pairs", d.marked_pairs, 0, 1'000'000);
+  d.faint_below = float(r.number("faint_below", d.faint_below, 0, 1));
   r.finish();
 }
 
@@ -154,6 +156,7 @@ void read_playback(TableReader& top, Scene& scene) {
   p.slow_motion_impulse = r.number("slow_motion_impulse", p.slow_motion_impulse, 0);
   p.slow_motion_speed = r.number("slow_motion_speed", p.slow_motion_speed, 0.01, 1);
   p.slow_motion_window = r.number("slow_motion_window", p.slow_motion_window, 0, 10, true);
+  if (r.get("poster")) p.poster = r.number("poster", 0, 0, scene.duration);
   r.finish();
 }
 

@@ -36,6 +36,7 @@ class TableReader {
   std::string where(const toml::node* node, std::string_view key) const;
 
   const toml::node* get(std::string_view key);  // marks the key as known; null when absent
+  bool has(std::string_view key) const { return table_.contains(key); }  // without marking it
   double number(std::string_view key, double fallback, double min = -INFINITY, double max = INFINITY,
                 bool exclusive_min = false);
   int integer(std::string_view key, int fallback, int min, int max);

@@ -3,6 +3,7 @@
 #pragma once
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,7 @@ struct PlaybackOptions {
   double slow_motion_impulse = 0.0;  // N s: a contact impulse above this slows playback; 0: never
   double slow_motion_speed = 0.2;    // the playback factor around such an impact
   double slow_motion_window = 0.25;  // s of simulated time before and after the impact
+  std::optional<double> poster;      // s of simulated time the poster shows; none: the teaching moment
 };
 
 }  // namespace impulse::demos

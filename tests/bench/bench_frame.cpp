@@ -68,7 +68,7 @@ render::Overlay bench_overlay(double t, double duration) {
   overlay.clock = clock;
   overlay.playback = "real time";
   overlay.legend = {{kNormal, "contact normal", 0, false}, {kVelocity, "velocity (1 m/s)", 50.0f, false}};
-  overlay.labels = {{render::Vec2f(640, 300), "J = 2.41 N\u00b7s", kNormal}};
+  overlay.labels = {{render::Vec2f(640, 300), "J = 2.41 N\u00b7s", kNormal, {}}};
   render::Plot energy{.title = "kinetic energy", .unit = "J", .x_end = float(duration), .y_min = 0, .y_max = 0,
                       .series = {{.colour = {0.90f, 0.62f, 0.00f}, .points = {}}}};
   for (double s = 0; s <= t; s += 1.0 / 30) energy.series[0].points.push_back(render::Vec2f(float(s), float(10 + 5 * std::sin(3 * s))));
