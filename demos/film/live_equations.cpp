@@ -122,7 +122,7 @@ std::string equation_panel_tex(const std::string& equation, const ImpactNumbers&
                                                        : "\\text{, the same at } e = 0";
   return "\\begin{aligned}&J = \\frac{-(1+e)\\,v_{ab}\\cdot\\hat n}{1/m_a + 1/m_b} = \\frac{-(1+" + e + ")\\,(" +
          figures(impact.approach) + ")}{" + masses_tex + "} = " + figures(correct) + newton_seconds + "\\\\[2pt]" +
-         "&" + solver + ";\\quad \\text{printed } -(1-e)\\text{: } " +
+         "&" + solver + "\\\\&\\text{printed } -(1-e)\\text{: } " +
          figures(printed) + newton_seconds + verdict + "\\end{aligned}";
 }
 
