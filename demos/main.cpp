@@ -322,7 +322,7 @@ int main(int argc, char** argv) {
     if (*simulate) {
       if (trace.bodies_path.empty() && trace.contacts_path.empty() && trace.world_path.empty())
         throw std::invalid_argument("simulate writes CSV: give --trace, --contacts or --world (or several)");
-      demos::Scene scene = load(scene_path, simulate_settings);
+      demos::Scene scene = load(scene_path, simulate_settings, false);  // numbers only: no TeX needed
       // The file's own values, not a pane of its [compare]: the checks about a pane do not apply.
       std::erase_if(scene.checks, [](const demos::CheckSpec& spec) { return spec.pane != 0; });
       std::vector<demos::CheckResult> checks;

@@ -1,5 +1,6 @@
 #include "demos/program.h"
 
+#include "demos/film/live_equations.h"
 #include "demos/gallery.h"
 #include "demos/progress_bar.h"
 #include "demos/scene/scene_world.h"
@@ -65,8 +66,9 @@ Comparison load_panes(const std::string& scene_path, const VideoOverrides& overr
   return alone;
 }
 
-demos::Scene load(const std::string& scene_path, const std::vector<std::string>& settings) {
+demos::Scene load(const std::string& scene_path, const std::vector<std::string>& settings, bool typeset) {
   demos::Scene scene = demos::load_scene(scene_path, settings);
+  if (typeset) demos::check_equations(scene);
   for (const std::string& warning : demos::start_warnings(scene)) std::fprintf(stderr, "impulse: %s\n", warning.c_str());
   return scene;
 }

@@ -69,7 +69,9 @@ Comparison load_comparison(const std::vector<std::string>& scene_paths, const st
 Comparison load_panes(const std::string& scene_path, const VideoOverrides& overrides, demos::RenderOptions& options);
 
 // The scene with the --set settings over it; what is odd but allowed is said on stderr.
-Scene load(const std::string& scene_path, const std::vector<std::string>& settings);
+// With `typeset`, its [[equation]]s' TeX is typeset too (check_equations): a LaTeX error is the
+// scene's, with its file and line.
+Scene load(const std::string& scene_path, const std::vector<std::string>& settings, bool typeset = true);
 
 // Prints each [[check]]'s result on stderr; the exit code: 0, or kExitCheckFailed if one failed.
 int report_checks(const std::string& scene_path, const std::vector<CheckResult>& results);

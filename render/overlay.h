@@ -3,6 +3,7 @@
 // Positions are pixels of the frame, x to the right and y down from its top-left corner.
 #pragma once
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,13 +27,28 @@ struct OverlayLabel {
   std::vector<ScreenSegment> avoid;
 };
 
-// Lines of text in a box whose top-left corner is `corner`, e.g. an equation with numbers in it;
-// the first line is its heading.
+// Typeset mathematics: an SVG of filled paths (LaTeX through dvisvgm), drawn in the ink colour.
+struct OverlayMath {
+  std::string key;                         // one per distinct SVG: the painter rasterises each key once
+  std::shared_ptr<const std::string> svg;  // null: none
+  std::string tex;                         // what it was typeset from (for tests; not drawn)
+  float pixels_per_point = 1.5f;           // the SVG's units (TeX points) on screen at 720 lines
+};
+
+// Where a panel goes: at `corner`, or stacked by the painter in a corner of the frame, clear of
+// the title and legend (top left), the clock and plots (top right) and the captions (bottom).
+enum class PanelPlace { at_corner, top_left, top_right, bottom_left, bottom_right, bottom };
+
+// A box of lines of text and typeset mathematics, e.g. an equation with numbers in it; the first
+// line is its heading, the mathematics goes under the lines.
 struct OverlayPanel {
-  Vec2f corner;                     // top left, or top right with from_right
-  bool from_right = false;
+  PanelPlace place = PanelPlace::at_corner;
+  Vec2f corner = Vec2f::Zero();     // with at_corner: where the box's `align` point goes
+  Vec2f align = Vec2f::Zero();      // that point as fractions of the box: (0, 0) its top left, (1, 0) top right
   std::vector<std::string> lines;
+  OverlayMath math;
   Colour colour{0.1f, 0.1f, 0.1f};  // of the heading
+  float opacity = 1.0f;             // fades in and out like captions
 };
 
 // One line of the legend: a short arrow (or dot) in `colour`, then `text`. When

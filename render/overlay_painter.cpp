@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "render/cairo_handles.h"
+#include "render/cairo_shapes.h"
+#include "render/panel_painter.h"
 
 namespace impulse::render {
 namespace {
@@ -36,21 +38,6 @@ double text_width(cairo_t* cr, const std::string& text) {
   cairo_text_extents_t extents;
   cairo_text_extents(cr, text.c_str(), &extents);
   return extents.x_advance;
-}
-
-void rounded_rectangle(cairo_t* cr, double x, double y, double width, double height, double radius) {
-  cairo_new_sub_path(cr);
-  cairo_arc(cr, x + width - radius, y + radius, radius, -M_PI / 2, 0);
-  cairo_arc(cr, x + width - radius, y + height - radius, radius, 0, M_PI / 2);
-  cairo_arc(cr, x + radius, y + height - radius, radius, M_PI / 2, M_PI);
-  cairo_arc(cr, x + radius, y + radius, radius, M_PI, 3 * M_PI / 2);
-  cairo_close_path(cr);
-}
-
-void panel(cairo_t* cr, double x, double y, double width, double height, double radius, double alpha) {
-  rounded_rectangle(cr, x, y, width, height, radius);
-  cairo_set_source_rgba(cr, 1.0, 1.0, 1.0, alpha);
-  cairo_fill(cr);
 }
 
 // A flat arrow from (x0, y) to (x0 + length, y), as the 3D arrows are drawn.
@@ -149,6 +136,7 @@ struct OverlayPainter::Cairo {
   cairo::ContextHandle context;
   std::vector<PixelRect> painted;
   std::vector<std::pair<int, int>> spans;  // scratch for composite_onto
+  PanelPainter panel_painter;              // keeps each typeset SVG rasterised
 
   void mark(double x, double y, double w, double h) {
     const int margin = 2 + static_cast<int>(4 * scale);  // anti-aliased edges and text halos
@@ -162,12 +150,13 @@ struct OverlayPainter::Cairo {
 
   void title(const Overlay& overlay, double& bottom);
   void clock(const Overlay& overlay, double& bottom);
-  void plots(const Overlay& overlay, double top);
-  void legend(const Overlay& overlay, double top);
+  double plots(const Overlay& overlay, double top);   // returns the column's bottom
+  double legend(const Overlay& overlay, double top);  // returns its bottom
   void labels(const Overlay& overlay);
   std::pair<double, double> label_place(const OverlayLabel& label, double text_width, double size) const;
-  void panels(const Overlay& overlay);
-  void captions(const Overlay& overlay);
+  // `left_top`, `right_top`: where the left and right columns' content ends; `captions_top`.
+  void panels(const Overlay& overlay, double left_top, double right_top, double captions_top);
+  double captions(const Overlay& overlay);  // returns the top of the captions (height if none)
   void composite_onto(Frame& frame);
 };
 
@@ -183,7 +172,7 @@ void OverlayPainter::Cairo::title(const Overlay& overlay, double& bottom) {
   for (const std::string& line : lines) content_width = std::max(content_width, text_width(cr, line));
   const double line_height = size * 1.2;
   const double content_height = line_height * lines.size();
-  panel(cr, margin, margin, content_width + 2 * pad, content_height + 2 * pad, 8 * scale, 0.8);
+  panel_box(cr, margin, margin, content_width + 2 * pad, content_height + 2 * pad, 8 * scale, 0.8);
   mark(margin, margin, content_width + 2 * pad, content_height + 2 * pad);
   set_colour(cr, kInk);
   for (size_t i = 0; i < lines.size(); ++i) {
@@ -195,8 +184,8 @@ void OverlayPainter::Cairo::title(const Overlay& overlay, double& bottom) {
 
 // At the left, under the title (the top of a frame is mostly sky): what each mark means, and
 // its scale.
-void OverlayPainter::Cairo::legend(const Overlay& overlay, double top) {
-  if (overlay.legend.empty()) return;
+double OverlayPainter::Cairo::legend(const Overlay& overlay, double top) {
+  if (overlay.legend.empty()) return top;
   cairo_t* cr = context.get();
   const double margin = 20 * scale, gap = 10 * scale, pad = 10 * scale;
   const double size = 14 * scale, line = 21 * scale;
@@ -209,8 +198,8 @@ void OverlayPainter::Cairo::legend(const Overlay& overlay, double top) {
     content_width = std::max(content_width, icon_width + 8 * scale + text_width(cr, entry.text));
   const double content_height = line * overlay.legend.size();
   const double x = margin, y = top + gap;
-  if (y + content_height + 2 * pad > height - margin) return;  // no room left
-  panel(cr, x, y, content_width + 2 * pad, content_height + 2 * pad, 8 * scale, 0.85);
+  if (y + content_height + 2 * pad > height - margin) return top;  // no room left
+  panel_box(cr, x, y, content_width + 2 * pad, content_height + 2 * pad, 8 * scale, 0.85);
   mark(x, y, content_width + 2 * pad, content_height + 2 * pad);
   double row = y + pad;
   for (const LegendEntry& entry : overlay.legend) {
@@ -228,6 +217,7 @@ void OverlayPainter::Cairo::legend(const Overlay& overlay, double top) {
     cairo_show_text(cr, entry.text.c_str());
     row += line;
   }
+  return y + content_height + 2 * pad;
 }
 
 void OverlayPainter::Cairo::clock(const Overlay& overlay, double& bottom) {
@@ -243,7 +233,7 @@ void OverlayPainter::Cairo::clock(const Overlay& overlay, double& bottom) {
   const double content_height =
       (overlay.clock.empty() ? 0 : clock_size * 1.1) + (overlay.playback.empty() ? 0 : playback_size * 1.5);
   const double right = width - margin;
-  panel(cr, right - content_width - 2 * pad, margin, content_width + 2 * pad, content_height + 2 * pad, 8 * scale, 0.8);
+  panel_box(cr, right - content_width - 2 * pad, margin, content_width + 2 * pad, content_height + 2 * pad, 8 * scale, 0.8);
   mark(right - content_width - 2 * pad, margin, content_width + 2 * pad, content_height + 2 * pad);
   double y = margin + pad;
   if (!overlay.clock.empty()) {
@@ -262,7 +252,7 @@ void OverlayPainter::Cairo::clock(const Overlay& overlay, double& bottom) {
   bottom = margin + content_height + 2 * pad;
 }
 
-void OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
+double OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
   cairo_t* cr = context.get();
   const double margin = 20 * scale, gap = 10 * scale;
   const double plot_height = 88 * scale, pad = 9 * scale;
@@ -274,9 +264,10 @@ void OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
   const double row_width = overlay.plots.size() * (plot_width + gap) - gap;
   double x = row ? std::max(margin, (width - row_width) / 2) : width - margin - plot_width;
   double y = row ? overlay.plots_row_top : top + gap;
+  double bottom = top;  // of the column
   for (const Plot& plot : overlay.plots) {
     if (y + plot_height > height - margin || x + plot_width > width) break;  // no room left
-    panel(cr, x, y, plot_width, plot_height, 8 * scale, 0.85);
+    panel_box(cr, x, y, plot_width, plot_height, 8 * scale, 0.85);
     mark(x, y, plot_width, plot_height);
 
     // The latest values, right-aligned, the last series rightmost (the unit is in the heading,
@@ -345,9 +336,11 @@ void OverlayPainter::Cairo::plots(const Overlay& overlay, double top) {
     if (row) {
       x += plot_width + gap;
     } else {
+      bottom = y + plot_height;
       y += plot_height + gap;
     }
   }
+  return bottom;
 }
 
 void OverlayPainter::Cairo::labels(const Overlay& overlay) {
@@ -395,32 +388,50 @@ std::pair<double, double> OverlayPainter::Cairo::label_place(const OverlayLabel&
   return best;
 }
 
-void OverlayPainter::Cairo::panels(const Overlay& overlay) {
+// Each panel at its corner, or stacked in its place: down from under the title and legend (top
+// left) or the clock and plots (top right), up from the bottom (above the captions when centred).
+void OverlayPainter::Cairo::panels(const Overlay& overlay, double left_top, double right_top, double captions_top) {
   cairo_t* cr = context.get();
-  const double size = 15 * scale, line = size * 1.4, pad = 10 * scale;
+  const double margin = 20 * scale, gap = 10 * scale;
+  double next_top[2] = {left_top + gap, right_top + gap};              // top left, top right
+  // Bottom left, right and centre: above the captions (which may span most of the width).
+  const double bottom = std::min(height - margin, captions_top - gap);
+  double next_bottom[3] = {bottom, bottom, bottom};
   for (const OverlayPanel& panel : overlay.panels) {
-    double box_width = 0;
-    for (size_t i = 0; i < panel.lines.size(); ++i) {
-      set_font(cr, size, i == 0, i > 0);
-      box_width = std::max(box_width, text_width(cr, panel.lines[i]));
+    const PanelPainter::Size size = panel_painter.measure(cr, panel, scale);
+    double x = 0, y = 0;
+    switch (panel.place) {
+      case PanelPlace::at_corner:
+        x = panel.corner.x() - panel.align.x() * size.width;
+        y = panel.corner.y() - panel.align.y() * size.height;
+        break;
+      case PanelPlace::top_left:
+      case PanelPlace::top_right: {
+        const bool right = panel.place == PanelPlace::top_right;
+        x = right ? width - margin - size.width : margin;
+        y = next_top[right];
+        next_top[right] += size.height + gap;
+        break;
+      }
+      case PanelPlace::bottom_left:
+      case PanelPlace::bottom_right:
+      case PanelPlace::bottom: {
+        const int which = panel.place == PanelPlace::bottom_left ? 0 : panel.place == PanelPlace::bottom_right ? 1 : 2;
+        x = which == 0 ? margin : which == 1 ? width - margin - size.width : (width - size.width) / 2;
+        y = next_bottom[which] - size.height;
+        next_bottom[which] = y - gap;
+        break;
+      }
     }
-    const double box_height = line * panel.lines.size() + 2 * pad - 0.3 * line;
-    const double left = panel.from_right ? panel.corner.x() - box_width - 2 * pad : panel.corner.x();
-    const double x = std::clamp(left, 0.0, std::max(0.0, width - box_width - 2 * pad));
-    const double y = std::clamp(double(panel.corner.y()), 0.0, std::max(0.0, height - box_height));
-    impulse::render::panel(cr, x, y, box_width + 2 * pad, box_height, 8 * scale, 0.9);
-    mark(x, y, box_width + 2 * pad, box_height);
-    for (size_t i = 0; i < panel.lines.size(); ++i) {
-      set_font(cr, size, i == 0, i > 0);
-      set_colour(cr, i == 0 ? panel.colour : kInk);
-      cairo_move_to(cr, x + pad, y + pad + size * 0.9 + line * i);
-      cairo_show_text(cr, panel.lines[i].c_str());
-    }
+    x = std::clamp(x, 0.0, std::max(0.0, width - size.width));
+    y = std::clamp(y, 0.0, std::max(0.0, height - size.height));
+    panel_painter.paint(cr, panel, x, y, scale);
+    mark(x, y, size.width, size.height);
   }
 }
 
-void OverlayPainter::Cairo::captions(const Overlay& overlay) {
-  if (overlay.captions.empty()) return;
+double OverlayPainter::Cairo::captions(const Overlay& overlay) {
+  if (overlay.captions.empty()) return height;
   cairo_t* cr = context.get();
   const double size = 24 * scale, line = size * 1.35, pad_x = 18 * scale, pad_y = 10 * scale;
   const double margin = 28 * scale;
@@ -448,6 +459,7 @@ void OverlayPainter::Cairo::captions(const Overlay& overlay) {
     }
     bottom = y - 8 * scale;
   }
+  return bottom + 8 * scale;
 }
 
 void OverlayPainter::Cairo::clear_painted() {
@@ -522,12 +534,12 @@ void OverlayPainter::paint(const Overlay& overlay, Frame& frame) {
 
   double title_bottom = 0, clock_bottom = 0;
   c.title(overlay, title_bottom);
-  c.legend(overlay, title_bottom);
+  const double legend_bottom = c.legend(overlay, title_bottom);
   c.clock(overlay, clock_bottom);
-  c.plots(overlay, clock_bottom);
+  const double plots_bottom = c.plots(overlay, clock_bottom);
   c.labels(overlay);
-  c.panels(overlay);
-  c.captions(overlay);
+  const double captions_top = c.captions(overlay);
+  c.panels(overlay, legend_bottom, overlay.plots_row_top >= 0 ? clock_bottom : plots_bottom, captions_top);
   if (cairo_status(c.context.get()) != CAIRO_STATUS_SUCCESS) {
     throw std::runtime_error(std::string("overlay: cairo failed: ") + cairo_status_to_string(cairo_status(c.context.get())));
   }

@@ -12,6 +12,7 @@ packages=(
   libtomlplusplus-dev                             # scene files
   libcli11-dev                                    # command line
   libcairo2-dev fonts-dejavu-core                 # 2D overlays and their font
+  texlive-latex-base dvisvgm librsvg2-dev         # typeset equations: LaTeX -> SVG (tex/), drawn by librsvg
   libgtest-dev                                    # tests
   libbullet-dev                                   # benchmark peer only
   ffmpeg                                          # benchmark peer only (render_bench's naive path); impulse never runs it

@@ -115,7 +115,7 @@ TEST(Film, PanesShareTheirMomentsAndSlowDownAroundAnyPanesImpact) {
 }
 
 // [overlay] equation = "eq8": from the impact on, a panel fills eq. 8 in with the hit's numbers,
-// the solver's impulse beside it, and the printed -(1 - e)'s. 1 kg at 3 m/s onto 2 kg at rest,
+// the solver's impulse beside it, and the printed -(1 - e)'s, typeset (its TeX read here). 1 kg at 3 m/s onto 2 kg at rest,
 // e = 0.7: J = 1.7 * 3 / 1.5 = 3.40 N s; printed 0.3 * 3 / 1.5 = 0.60 N s.
 TEST(Film, EquationEightIsFilledInWithTheImpactsNumbers) {
   const auto dir = testing::scratch("film_compare_test", "equation");
@@ -153,11 +153,14 @@ position = [0.5, 0, 0]
   EXPECT_TRUE(picture.overlay.panels.empty()) << "before the impact";
   while (film.next_frame() < film.frame_count()) film.next(picture);
   ASSERT_EQ(picture.overlay.panels.size(), 1u);
-  const std::vector<std::string>& lines = picture.overlay.panels[0].lines;
-  ASSERT_EQ(lines.size(), 5u);
-  EXPECT_EQ(lines[2], "  = -(1+0.70)\u00b7(-3.00) / (1/1.00 + 1/2.00)");
-  EXPECT_EQ(lines[3], "  = 3.40 N\u00b7s    solver: 3.40 N\u00b7s");
-  EXPECT_EQ(lines[4], "printed -(1-e): 0.60 N\u00b7s, too little");
+  const render::OverlayPanel& panel = picture.overlay.panels[0];
+  ASSERT_EQ(panel.lines.size(), 1u);
+  EXPECT_EQ(panel.lines[0].rfind("eq. 8 at t = ", 0), 0u) << panel.lines[0];
+  ASSERT_TRUE(panel.math.svg);
+  const std::string& tex = panel.math.tex;
+  EXPECT_NE(tex.find("\\frac{-(1+0.70)\\,(-3.00)}{1/1.00 + 1/2.00} = 3.40\\ \\mathrm{N\\,s}"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("\\text{solver: } 3.40"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("-(1-e)\\text{: } 0.60\\ \\mathrm{N\\,s}\\text{, too little}"), std::string::npos) << tex;
 }
 
 }  // namespace

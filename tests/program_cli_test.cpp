@@ -228,6 +228,33 @@ speed = 0.01
   EXPECT_TRUE(fixed.succeeded()) << fixed.describe();
 }
 
+// TeX that latex refuses is the scene's error, with its file and line, from `check` and before a
+// render writes anything.
+TEST(Checks, BadTexInAnEquationIsASceneErrorWithItsLine) {
+  const fs::path dir = work_directory();
+  std::ofstream(dir / "bad_tex.toml") << std::string(kHeadOn) + R"(
+[[equation]]
+tex = 'J = \fracc{1}{2}'
+)";
+  int line = 0;
+  {
+    std::ifstream file(dir / "bad_tex.toml");
+    std::string text;
+    for (int n = 1; std::getline(file, text); ++n)
+      if (text.rfind("tex = ", 0) == 0) line = n;
+  }
+  const std::string expected = (dir / "bad_tex.toml").string() + ":" + std::to_string(line) +
+                               ": [[equation]] 1 field 'tex': LaTeX: Undefined control sequence \\fracc";
+  const testing::ChildResult checked = impulse({"check", (dir / "bad_tex.toml").string()});
+  EXPECT_EQ(checked.exit_code, 1) << checked.describe();
+  EXPECT_NE(checked.stderr_text.find(expected), std::string::npos) << checked.stderr_text;
+  const testing::ChildResult rendered =
+      impulse({"-q", "render", (dir / "bad_tex.toml").string(), "-o", (dir / "bad_tex.mp4").string()});
+  EXPECT_EQ(rendered.exit_code, 1) << rendered.describe();
+  EXPECT_NE(rendered.stderr_text.find(expected), std::string::npos) << rendered.stderr_text;
+  EXPECT_FALSE(fs::exists(dir / "bad_tex.mp4"));
+}
+
 // Two balls dropped side by side; `compare` varies the right one's restitution.
 constexpr const char* kTwoBalls = R"(
 [scene]

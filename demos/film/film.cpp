@@ -95,6 +95,25 @@ void Film::next(FilmPicture& picture) {
   }
 }
 
+// A pane's panel moved to where the pane is; one in a named place to that corner of the pane (the
+// painter stacks only the frame's), the bottom left above the pane's name.
+render::OverlayPanel Film::into_pane(render::OverlayPanel panel, const render::Vec2f& origin, float scale) const {
+  const float margin = 10 * scale, width = float(layout_.width), height = float(layout_.height);
+  const float name = 30 * scale;
+  using Place = render::PanelPlace;
+  switch (panel.place) {
+    case Place::at_corner: panel.corner += origin; return panel;
+    case Place::top_left: panel.corner = {margin, margin}; panel.align = {0, 0}; break;
+    case Place::top_right: panel.corner = {width - margin, margin}; panel.align = {1, 0}; break;
+    case Place::bottom_left: panel.corner = {margin, height - name}; panel.align = {0, 1}; break;
+    case Place::bottom_right: panel.corner = {width - margin, height - margin}; panel.align = {1, 1}; break;
+    case Place::bottom: panel.corner = {width / 2, height - margin}; panel.align = {0.5f, 1}; break;
+  }
+  panel.corner += origin;
+  panel.place = Place::at_corner;
+  return panel;
+}
+
 // The first pane's overlay for the whole frame; every pane's labels moved to where the pane is,
 // its name at its bottom left, and each plot's curves of every pane on the first pane's axes.
 void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay) const {
@@ -113,10 +132,7 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
       }
       labels.push_back(std::move(label));
     }
-    for (render::OverlayPanel panel : pane.panels) {
-      panel.corner += origin;
-      panels.push_back(std::move(panel));
-    }
+    for (const render::OverlayPanel& panel : pane.panels) panels.push_back(into_pane(panel, origin, scale));
     // Inside its bottom left corner, clear of the title and legend over the first pane's top.
     labels.push_back({origin + render::Vec2f(-2 * scale, float(layout_.height) - 4 * scale), panes_[i].label, pane_colour(int(i)), {}});
     for (size_t k = 0; k < pane.plots.size(); ++k) {

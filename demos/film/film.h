@@ -63,6 +63,7 @@ class Film {
 
  private:
   void compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay) const;
+  render::OverlayPanel into_pane(render::OverlayPanel panel, const render::Vec2f& origin, float scale) const;
 
   std::vector<Pane> panes_;
   int frame_height_;

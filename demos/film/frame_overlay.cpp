@@ -45,7 +45,7 @@ LabelledImpulse labelled_impulse(const std::vector<physics::ContactRecord>& cont
 FrameOverlay::FrameOverlay(const Scene& scene, TakeSummary summary, const ArrowScales& scales, int width,
                            int height)
     : scene_(scene), summary_(std::move(summary)), scales_(scales), width_(width), height_(height),
-      label_body_(label_body(scene)) {}
+      label_body_(label_body(scene)), equations_(scene, film_typesetter()) {}
 
 void FrameOverlay::add_label(const FrameState& state, const render::CameraView& view, render::Overlay& overlay) const {
   const std::string& kind = scene_.overlay.label;
@@ -96,29 +96,6 @@ void FrameOverlay::add_label(const FrameState& state, const render::CameraView& 
   }
 }
 
-// Eq. 8 with the impact's numbers in it, the solver's impulse beside it, and what the printed
-// numerator -(1 - e) would have given (ERRATA.md): too little, and nothing at e = 1.
-void FrameOverlay::add_equation(const ImpactNumbers& impact, render::Overlay& overlay) const {
-  auto inverse = [](double inverse_mass) { return inverse_mass > 0 ? "1/" + format("%.2f", 1 / inverse_mass) : std::string("0"); };
-  const double masses = impact.inverse_mass_a + impact.inverse_mass_b;
-  const double correct = masses > 0 ? -(1 + impact.restitution) * impact.approach / masses : 0;
-  const double printed = masses > 0 ? -(1 - impact.restitution) * impact.approach / masses : 0;
-  render::OverlayPanel panel;
-  panel.corner = render::Vec2f(float(width_ - 10 * height_ / 720.0), float((scene_.overlay.clock ? 100 : 12) * height_ / 720.0));
-  panel.from_right = true;
-  panel.colour = mark_colour::normal_impulse;
-  panel.lines = {"eq. 8 at t = " + format("%.2f", impact.time) + " s (SI units)",
-                 "J = -(1+e) v_ab\u00b7n / (1/m_a + 1/m_b)",
-                 "  = -(1+" + format("%.2f", impact.restitution) + ")\u00b7(" + format("%.2f", impact.approach) + ") / (" +
-                     inverse(impact.inverse_mass_a) + " + " + inverse(impact.inverse_mass_b) + ")",
-                 "  = " + format("%.2f", correct) + " N\u00b7s    solver: " + format("%.2f", impact.impulse) + " N\u00b7s",
-                 "printed -(1-e): " + format("%.2f", printed) + " N\u00b7s" +
-                     (impact.restitution >= 1  ? ", none: they pass through"
-                      : impact.restitution > 0 ? ", too little"
-                                               : ", the same at e = 0")};
-  overlay.panels.push_back(std::move(panel));
-}
-
 void FrameOverlay::make(const FrameState& state, const PlotRecorder& plots, render::Overlay& overlay) const {
   const OverlayOptions& options = scene_.overlay;
   const render::CameraView view = render::make_camera_view(state.camera, width_, height_);
@@ -127,7 +104,7 @@ void FrameOverlay::make(const FrameState& state, const PlotRecorder& plots, rend
   overlay.labels.clear();
   add_label(state, view, overlay);
   overlay.panels.clear();
-  if (scene_.overlay.equation == "eq8" && state.impact != nullptr && state.impact->time >= 0) add_equation(*state.impact, overlay);
+  equations_.add_panels(state.time, state.impact != nullptr ? *state.impact : ImpactNumbers{}, overlay);
   overlay.clock = options.clock ? format("t = %.2f s", state.time) : "";
   overlay.playback = options.clock ? playback_text(state.speed, state.slow_motion, scene_.playback.speed) : "";
   overlay.playback_highlight = state.slow_motion;

@@ -1,6 +1,7 @@
 // The 2D overlay of one frame of a scene: title, legend, captions, the clock and playback speed,
-// a label with the value beside the chosen arrow, and the live plots.
+// a label with the value beside the chosen arrow, the live plots, and the typeset equations.
 #pragma once
+#include "demos/film/live_equations.h"
 #include "demos/film/marks.h"
 #include "demos/film/plot_recorder.h"
 #include "demos/film/scene_draw_list.h"
@@ -32,7 +33,7 @@ struct FrameState {
   const std::vector<BodyPose>* poses = nullptr;
   const std::vector<physics::ContactRecord>* contacts = nullptr;
   int64_t plotted_steps = 0;  // steps the plots show
-  const ImpactNumbers* impact = nullptr;  // the latest impact, for eq. 8 on screen
+  const ImpactNumbers* impact = nullptr;  // the latest impact, for the equations on screen
   const std::vector<render::ArrowItem>* arrows = nullptr;  // drawn under the overlay: labels avoid them
   render::Camera camera;
 };
@@ -41,12 +42,14 @@ class FrameOverlay {
  public:
   FrameOverlay(const Scene& scene, TakeSummary summary, const ArrowScales& scales, int width, int height);
 
+  // Typesets every equation the frames will show with these impacts (the samples'), before any
+  // frame is drawn: LiveEquations::prepare.
+  void prepare(const std::vector<const ImpactNumbers*>& impacts) const { equations_.prepare(impacts); }
   // Fills `overlay` (reusing its memory) for the frame.
   void make(const FrameState& state, const PlotRecorder& plots, render::Overlay& overlay) const;
 
  private:
   void add_label(const FrameState& state, const render::CameraView& view, render::Overlay& overlay) const;
-  void add_equation(const ImpactNumbers& impact, render::Overlay& overlay) const;
 
   const Scene& scene_;
   TakeSummary summary_;
@@ -54,6 +57,7 @@ class FrameOverlay {
   int width_;
   int height_;
   int label_body_ = -1;   // -1: the largest anywhere
+  LiveEquations equations_;
   std::string plot_body_name_;
 };
 

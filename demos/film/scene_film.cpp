@@ -65,6 +65,9 @@ void SceneFilm::develop(int width, int height, const TakeSummary& summary) {
   }
   scales_ = arrow_scales(scene_, summary);
   overlay_maker_.emplace(scene_, summary, scales_, width, height);
+  std::vector<const ImpactNumbers*> impacts;
+  for (const FrameSample& sample : samples_) impacts.push_back(&sample.impact);
+  overlay_maker_->prepare(impacts);
 }
 
 namespace {

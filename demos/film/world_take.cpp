@@ -21,6 +21,13 @@ bool needs_summary(const Scene& scene) {
 
 }  // namespace
 
+bool shows_impact_numbers(const Scene& scene) {
+  if (scene.overlay.equation != "none") return true;
+  for (const EquationCue& cue : scene.equations)
+    if (cue.live) return true;
+  return false;
+}
+
 WorldTake::WorldTake(const Scene& scene)
     : scene_(scene),
       world_(build_world(scene)),
@@ -42,11 +49,12 @@ WorldTake::WorldTake(const Scene& scene)
 bool WorldTake::finished() const { return !(world_.time() < scene_.duration + 0.5 * scene_.world.time_step); }
 
 void WorldTake::step() {
-  std::vector<physics::Vec3> velocities_before;
-  if (scene_.overlay.equation == "eq8")
-    for (const physics::Body& body : world_.bodies()) velocities_before.push_back(body.velocity);
+  std::vector<Motion> before;
+  if (shows_impact_numbers(scene_))
+    for (const physics::Body& body : world_.bodies())
+      before.push_back({body.position, body.velocity, body.angular_velocity, body.inv_inertia_world});
   world_.step();
-  if (!velocities_before.empty()) note_impact(velocities_before);
+  if (!before.empty()) note_impact(before);
   checks_.step(world_);
   const physics::StepRecord& record = world_.record();
   const auto& bodies = world_.bodies();
@@ -83,7 +91,7 @@ void WorldTake::step() {
 
 // The strongest contact of an impact step (one that slows the video), with the relative normal
 // velocity its bodies had before the step: eq. 8's numbers, next to what the solver gave.
-void WorldTake::note_impact(const std::vector<physics::Vec3>& velocities_before) {
+void WorldTake::note_impact(const std::vector<Motion>& before) {
   const double threshold = scene_.playback.slow_motion_impulse;
   if (!(threshold > 0)) return;  // no impacts without a threshold: resting contacts are none
   const physics::StepRecord& record = world_.record();
@@ -98,9 +106,21 @@ void WorldTake::note_impact(const std::vector<physics::Vec3>& velocities_before)
   impact.time = record.time;
   impact.body_a = strongest->body_a;
   impact.body_b = strongest->body_b;
-  const physics::Vec3 va = impact.body_a >= 0 ? velocities_before[impact.body_a] : physics::Vec3::Zero();
-  const physics::Vec3 vb = impact.body_b >= 0 ? velocities_before[impact.body_b] : physics::Vec3::Zero();
-  impact.approach = (va - vb).dot(strongest->normal);
+  const physics::Vec3& n = strongest->normal;
+  const Motion still{physics::Vec3::Zero(), physics::Vec3::Zero(), physics::Vec3::Zero(), physics::Mat3::Zero()};
+  const Motion& a = impact.body_a >= 0 ? before[impact.body_a] : still;
+  const Motion& b = impact.body_b >= 0 ? before[impact.body_b] : still;
+  impact.approach = (a.velocity - b.velocity).dot(n);
+  // Static bodies (and the world) neither move nor turn: their offset counts for nothing.
+  auto moves = [&](int body) { return body >= 0 && !bodies[body].is_static(); };
+  impact.offset_a = moves(impact.body_a) ? physics::Vec3(strongest->point - a.position) : physics::Vec3::Zero();
+  impact.offset_b = moves(impact.body_b) ? physics::Vec3(strongest->point - b.position) : physics::Vec3::Zero();
+  const physics::Vec3 point_a = a.velocity + a.angular_velocity.cross(impact.offset_a);
+  const physics::Vec3 point_b = b.velocity + b.angular_velocity.cross(impact.offset_b);
+  impact.point_approach = (point_a - point_b).dot(n);
+  impact.angular = ((a.inverse_inertia * impact.offset_a.cross(n)).cross(impact.offset_a) +
+                    (b.inverse_inertia * impact.offset_b.cross(n)).cross(impact.offset_b))
+                       .dot(n);
   const double ea = impact.body_a >= 0 ? bodies[impact.body_a].material.restitution : 0;
   const double eb = impact.body_b >= 0 ? bodies[impact.body_b].material.restitution : 0;
   impact.restitution = std::max(ea, eb);  // the pair's, as the solver mixes it

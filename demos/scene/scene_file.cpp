@@ -67,6 +67,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& settin
   read_patterns(top, scene);
   read_joints(top, scene);
   read_view(top, scene);  // after the bodies, whose names it checks
+  read_equations(top, scene);  // after [playback]
   read_compare(top, scene);
   read_checks(top, scene);
   top.finish();

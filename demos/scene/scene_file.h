@@ -1,6 +1,7 @@
 // Scene files (TOML): the world, its bodies, the camera and the video, as a lecturer writes them.
 // The format is described in README.md, "Scene files".
 #pragma once
+#include "demos/scene/equation_cue.h"
 #include "demos/scene/scene_checks.h"
 #include "demos/scene/view_options.h"
 #include "physics/world.h"
@@ -62,6 +63,7 @@ struct Scene {
   DrawOptions draw;
   OverlayOptions overlay;
   std::vector<CaptionCue> captions;
+  std::vector<EquationCue> equations;  // [[equation]]
   PlaybackOptions playback;
   std::vector<CheckSpec> checks;  // [[check]]: what must hold
   CompareSpec compare;            // [compare]

@@ -12,7 +12,7 @@ namespace {
 
 // The tables a scene file may have, and which of them are lists of tables.
 const std::vector<std::string> kTables = {"scene", "world", "camera", "video", "draw", "overlay", "playback", "compare"};
-const std::vector<std::string> kLists = {"body", "joint", "caption", "pyramid", "lattice", "check"};
+const std::vector<std::string> kLists = {"body", "joint", "caption", "equation", "pyramid", "lattice", "check"};
 
 // The argument as a message shows it: a line break or tab written as \n or \t, so the message
 // stays one line.

@@ -34,5 +34,6 @@ void read_joints(TableReader& top, Scene& scene);  // [[joint]], after the bodie
 void read_view(TableReader& top, Scene& scene);
 void read_compare(TableReader& top, Scene& scene);  // [compare], before the checks that name a pane
 void read_checks(TableReader& top, Scene& scene);  // [[check]], after the bodies they name    // [camera], [video], [draw], [overlay], [[caption]], [playback]
+void read_equations(TableReader& top, Scene& scene);  // [[equation]], after [playback]
 
 }  // namespace impulse::demos

@@ -127,7 +127,7 @@ void read_overlay(TableReader& top, Scene& scene) {
   }
   o.label = r.choice("label", o.label, {"impulse", "velocity", "none"});
   o.label_body = body_name(r, "label_body", scene);
-  o.equation = r.choice("equation", o.equation, {"none", "eq8"});
+  o.equation = r.choice("equation", o.equation, {"none", "eq8", "eq13"});
   r.finish();
 }
 

@@ -19,6 +19,10 @@ TableReader::TableReader(const toml::table& table, std::string file, std::string
     : table_(table), file_(std::move(file)), where_(std::move(where)) {}
 
 void TableReader::fail(const toml::node* node, std::string_view key, const std::string& reason) const {
+  throw SceneError(where(node, key) + ": " + reason);
+}
+
+std::string TableReader::where(const toml::node* node, std::string_view key) const {
   const auto& source = node ? node->source() : table_.source();
   std::ostringstream message;
   // A value given on the command line is named by its --set argument, not by a line of the file.
@@ -30,8 +34,7 @@ void TableReader::fail(const toml::node* node, std::string_view key, const std::
   else
     message << file_ << ':' << source.begin.line << ": " << where_;
   if (!key.empty()) message << " field '" << key << "'";
-  message << ": " << reason;
-  throw SceneError(message.str());
+  return message.str();
 }
 
 const toml::node* TableReader::get(std::string_view key) {

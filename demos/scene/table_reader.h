@@ -32,6 +32,8 @@ class TableReader {
 
   // Throws SceneError "FILE:LINE: WHERE field 'KEY': REASON" (the node's line, else the table's).
   [[noreturn]] void fail(const toml::node* node, std::string_view key, const std::string& reason) const;
+  // What fail() writes before ": REASON", for a message made later (e.g. about a field's LaTeX).
+  std::string where(const toml::node* node, std::string_view key) const;
 
   const toml::node* get(std::string_view key);  // marks the key as known; null when absent
   bool has(std::string_view key) const { return table_.contains(key); }  // without marking it

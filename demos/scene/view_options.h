@@ -48,7 +48,7 @@ struct OverlayOptions {
   double plot_from = 0;          // s: the plots' time axis starts here (to leave out a landing's spike)
   std::string label = "impulse"; // the arrow that gets its value written beside it: impulse, velocity, none
   std::string label_body;        // on which body (default: whichever has the largest)
-  std::string equation = "none"; // "eq8": eq. 8 filled in with the latest impact's numbers (needs slow motion)
+  std::string equation = "none"; // "eq8" or "eq13": filled in with the latest impact's numbers (needs slow motion)
 };
 
 // [[camera.keyframe]]: where the camera is at `time` s; it eases between keyframes.

@@ -1,0 +1,35 @@
+// [[equation]] tables (equation_cue.h). Only what can be told without LaTeX is checked here (the
+// loader runs no program: it stays quick for `check`, the bad-scene tests and the fuzzer); the
+// TeX itself is typeset and checked by the film's check_equations (demos/film/live_equations.h).
+#include "demos/scene/scene_sections.h"
+
+namespace impulse::demos {
+
+void read_equations(TableReader& top, Scene& scene) {
+  const toml::array* equations = top.table_list("equation");
+  if (!equations) return;
+  int number = 0;
+  for (const toml::node& item : *equations) {
+    const std::string where = "[[equation]] " + std::to_string(++number);
+    TableReader r(*item.as_table(), scene.path, where);
+    EquationCue cue;
+    cue.tex = r.string("tex", "");
+    if (cue.tex.find_first_not_of(" \t\r\n") == std::string::npos)
+      r.fail(r.get("tex"), "tex", "missing: LaTeX mathematics in single quotes, like tex = 'J = \\frac{1}{2}'");
+    cue.origin = r.where(r.get("tex"), "tex");
+    cue.live = has_live_values(cue.tex);
+    if (cue.live && !(scene.playback.slow_motion_impulse > 0))
+      r.fail(r.get("tex"), "tex",
+             "live values such as {e} are those of the latest impact that slows the video: set [playback] "
+             "slow_motion_impulse > 0");
+    cue.start = r.number("start", 0, 0);
+    cue.end = r.number("end", scene.duration, 0);
+    if (cue.end <= cue.start) r.fail(r.get("end"), "end", "must come after start");
+    cue.position = r.choice("position", cue.position, {"top-left", "top-right", "bottom-left", "bottom-right", "bottom"});
+    cue.size = r.number("size", cue.size, 6, 100);
+    r.finish();
+    scene.equations.push_back(std::move(cue));
+  }
+}
+
+}  // namespace impulse::demos
