@@ -127,7 +127,7 @@ std::pair<int, std::string> create_own_temporary(const std::string& final_path) 
     const std::string path = final_path + "." + std::to_string(getpid()) + "-" + std::to_string(next_number++) + ".part";
     const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0 && errno == EEXIST) continue;  // taken: left by an earlier process with this id
-    if (fd < 0) throw OutputError("cannot create " + path + ": " + std::strerror(errno));
+    if (fd < 0) throw OutputError("cannot write " + final_path + " (its temporary " + path + "): " + std::strerror(errno));
     if (flock(fd, LOCK_EX) != 0) {
       const std::string reason = std::strerror(errno);
       close(fd);

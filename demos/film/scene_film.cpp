@@ -53,15 +53,23 @@ void SceneFilm::develop(int width, int height, const TakeSummary& summary) {
   const bool label_written = scene_.overlay.label == "impulse";
   if (label_written || scene_.draw.impulses) {
     const int body = label_written ? label_body(scene_) : -1;
+    int last = -1;  // the last frame that still shows the peak (the hold keeps an impact on screen)
     for (size_t i = 0; i < samples_.size(); ++i) {
       if (moments_[i].frame < 0) continue;  // a still, not a frame of the video
       const std::vector<physics::ContactRecord> marked = marked_contacts(samples_[i].contacts, scene_.draw.marked_pairs);
       const LabelledImpulse labelled = labelled_impulse(marked, bodies_, body);
       // As the label: 0.005 N s and more (frame_overlay.cpp).
-      if (labelled.contact != nullptr && labelled.contact->normal_impulse >= 0.005 &&
-          labelled.contact->normal_impulse > labelled_peak_.impulse)
+      if (labelled.contact == nullptr || labelled.contact->normal_impulse < 0.005) continue;
+      if (labelled.contact->normal_impulse > labelled_peak_.impulse) {
         labelled_peak_ = {moments_[i].frame, labelled.contact->normal_impulse};
+        last = moments_[i].frame;
+      } else if (labelled.contact->normal_impulse == labelled_peak_.impulse && last == moments_[i].frame - 1) {
+        last = moments_[i].frame;
+      }
     }
+    // The middle of the frames showing it: the impact's marks, and what follows from it (its
+    // equation panel, the bodies parting), are on screen together.
+    if (labelled_peak_.frame >= 0) labelled_peak_.frame = (labelled_peak_.frame + last) / 2;
   }
   scales_ = arrow_scales(scene_, summary);
   overlay_maker_.emplace(scene_, summary, scales_, width, height);

@@ -58,7 +58,8 @@ class SceneFilm {
   // the video's length for a time past the last frame.
   double video_time_of(double time) const;
   // The largest impulse the "impulse" label writes in any frame (without that label, the largest
-  // impulse arrow on a moving body), and the first frame that shows it; frame -1 when none shows.
+  // impulse arrow on a moving body), and the middle one of the frames in a row that show it;
+  // frame -1 when none shows.
   struct LabelledPeak {
     int frame = -1;
     double impulse = 0;
