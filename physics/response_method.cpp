@@ -98,18 +98,12 @@ void World::solve_workshop(Real dt) {
     total.tangent1 += applied.tangent * applied.tangent_direction.dot(t1);
     total.tangent2 += applied.tangent * applied.tangent_direction.dot(t2);
   });
-  integrate_velocities(dt);
-  solve_joints(dt, true);
-  integrate_positions(dt);
-  solve_joints(dt, false);
+  move_bodies(dt);
 }
 
 // Move, then push overlapping bodies apart. Velocities keep what gravity gave them.
 void World::solve_projection(Real dt) {
-  integrate_velocities(dt);
-  solve_joints(dt, true);
-  integrate_positions(dt);
-  solve_joints(dt, false);
+  move_bodies(dt);
   for_each_plain_contact([&](const Contact& contact, RigidBody& a, RigidBody& b, Real penetration, TeachingImpulse&) {
     project_apart(a, b, contact.normal, penetration);
   });
@@ -127,14 +121,19 @@ void World::solve_penalty(Real h) {
       total.tangent1 += applied.tangent1;
       total.tangent2 += applied.tangent2;
     });
-    integrate_velocities(h);
-    solve_joints(h, true);
-    integrate_positions(h);
-    solve_joints(h, false);
+    move_bodies(h);
   }
 }
 
-// The teaching methods answer contacts their own way; joints are solved as in the default method.
+// The teaching methods' motion over h: gravity, the joints (solved as in the default method, with
+// and then without their position bias), and the positions. Contacts are the pages' alone.
+void World::move_bodies(Real h) {
+  integrate_velocities(h);
+  solve_joints(h, true);
+  integrate_positions(h);
+  solve_joints(h, false);
+}
+
 void World::solve_joints(Real h, bool use_bias) {
   if (joints_.empty()) return;
   if (use_bias) joint_solver_.warm_start(solver_bodies_);

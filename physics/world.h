@@ -86,6 +86,7 @@ class World {
   void solve_workshop(Real dt);
   void solve_projection(Real dt);
   void solve_penalty(Real h);
+  void move_bodies(Real h);
   void solve_joints(Real h, bool use_bias);
   template <class Page>
   void for_each_plain_contact(Page&& page);
