@@ -47,8 +47,10 @@ struct alignas(64) ContactConstraint {  // a cache line of its own at each end: 
   Vec3 ra_cross_n = Vec3::Zero(), rb_cross_n = Vec3::Zero();
   Vec3 angular_a = Vec3::Zero(), angular_b = Vec3::Zero();
   Real friction = 0, restitution = 0;
-  Real normal_impulse = 0;             // the last sub-step's, warm started from the last step
-  // Sums over the whole step, for the records.
+  // The impulses. After prepare(): the warm start; during the sub-steps the packed lanes hold the
+  // current ones (contact_lanes.h); after store_impulses(): the last sub-step's, and the sums over
+  // the whole step for the records.
+  Real normal_impulse = 0;
   Real total_normal_impulse = 0, total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
   Real normal_acceleration = 0;        // of A relative to B along the normal, from gravity
 };
@@ -61,7 +63,9 @@ struct alignas(64) ManifoldConstraint {
   // Its points', which share them (one pair, one normal).
   Vec3 normal = Vec3::Zero(), tangent1 = Vec3::Zero(), tangent2 = Vec3::Zero();
   Real friction = 0, restitution = 0;
-  Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;  // the last sub-step's
+  // The impulses, as for a point's: the warm start after prepare(), the lanes' during the
+  // sub-steps, the last sub-step's and the step's totals after store_impulses().
+  Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;
   Real total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
   Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
   Real bounce_speed = 0;               // m/s, the speed the pair parts at after its hit

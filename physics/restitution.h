@@ -21,8 +21,10 @@ struct BounceImpulses {
 };
 
 // Bounces manifold `m` (its points `points[0..m.count)`) if it meets fast enough within this
-// sub-step of h; returns whether it did. Then m.bounce_shift says what to take back after the
-// positions (take_back_bounce_shift).
+// sub-step of h; returns whether it did. It reads the constraints' geometry (fixed for the step)
+// and the bodies' states, changes the states, and returns what it applied for the caller to add
+// to the step's totals (in the lanes, where the sub-steps keep them). Then m.bounce_shift says
+// what to take back after the positions (take_back_bounce_shift).
 bool bounce(ManifoldConstraint& m, const ContactConstraint* points, BodyState& sa, const BodyInertia& ia, BodyState& sb,
             const BodyInertia& ib, Real restitution_threshold, Real h, BounceImpulses& applied);
 
