@@ -1,5 +1,7 @@
 #include "physics/joint_solver.h"
 
+#include "physics/normal_impulse.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -82,10 +84,12 @@ void JointSolver::prepare(std::vector<Joint>& joints, const std::vector<Body>& b
   }
 }
 
-void JointSolver::warm_start(std::vector<BodyState>& states) const {
+void JointSolver::warm_start(SolverBodies& bodies) const {
   for (const Prepared& p : prepared_) {
-    BodyState& sa = states[p.a];
-    BodyState& sb = states[p.b];
+    BodyState& sa = bodies.states[p.a];
+    BodyState& sb = bodies.states[p.b];
+    const Mat3& inv_ia = bodies.inertia[p.a].inv_inertia;
+    const Mat3& inv_ib = bodies.inertia[p.b].inv_inertia;
     const Joint& j = *p.joint;
     const Vec3 ra = rotate(sa.dq, p.anchor_a), rb = rotate(sb.dq, p.anchor_b);
     Vec3 linear = j.linear_impulse;
@@ -99,16 +103,18 @@ void JointSolver::warm_start(std::vector<BodyState>& states) const {
       tangent_basis(rotate(sa.dq, p.axis_a), t1, t2);
       angular = j.angular_impulse[0] * t1 + j.angular_impulse[1] * t2;
     }
-    apply_impulse(sa, sb, ra, rb, -linear);  // +linear on B, -linear on A
-    sa.w -= sa.inv_inertia * angular;
-    sb.w += sb.inv_inertia * angular;
+    apply_impulse(sa, inv_ia, sb, inv_ib, ra, rb, -linear);  // +linear on B, -linear on A
+    sa.w -= inv_ia * angular;
+    sb.w += inv_ib * angular;
   }
 }
 
-void JointSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_bias) {
+void JointSolver::solve(SolverBodies& bodies, Real inv_h, bool use_bias) {
   for (Prepared& p : prepared_) {
-    BodyState& sa = states[p.a];
-    BodyState& sb = states[p.b];
+    BodyState& sa = bodies.states[p.a];
+    BodyState& sb = bodies.states[p.b];
+    const Mat3& inv_ia = bodies.inertia[p.a].inv_inertia;
+    const Mat3& inv_ib = bodies.inertia[p.b].inv_inertia;
     Joint& j = *p.joint;
     const Vec3 ra = rotate(sa.dq, p.anchor_a), rb = rotate(sb.dq, p.anchor_b);
     const Real bias_rate = use_bias ? softness_.bias_rate : 0;
@@ -123,7 +129,7 @@ void JointSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_bia
       Vec3 t[2];
       tangent_basis(axis_a, t[0], t[1]);
       const Vec3 misalignment = axis_a.cross(axis_b);
-      const Mat3 inv_i = sa.inv_inertia + sb.inv_inertia;
+      const Mat3 inv_i = inv_ia + inv_ib;
       Eigen::Matrix<Real, 2, 2> k;
       for (int r = 0; r < 2; ++r)
         for (int c = 0; c < 2; ++c) k(r, c) = t[r].dot(inv_i * t[c]);
@@ -136,19 +142,19 @@ void JointSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_bia
         j.angular_impulse[0] += impulse[0];
         j.angular_impulse[1] += impulse[1];
         const Vec3 angular = impulse[0] * t[0] + impulse[1] * t[1];
-        sa.w -= sa.inv_inertia * angular;
-        sb.w += sb.inv_inertia * angular;
+        sa.w -= inv_ia * angular;
+        sb.w += inv_ib * angular;
       }
     }
 
     if (j.type == JointType::ball || j.type == JointType::hinge) {
       // Three linear rows: the anchors stay together.
-      const Mat3 k = (sa.inv_mass + sb.inv_mass) * Mat3::Identity() + skew(ra) * sa.inv_inertia * skew(ra).transpose() +
-                     skew(rb) * sb.inv_inertia * skew(rb).transpose();
+      const Mat3 k = (sa.inv_mass + sb.inv_mass) * Mat3::Identity() + skew(ra) * inv_ia * skew(ra).transpose() +
+                     skew(rb) * inv_ib * skew(rb).transpose();
       const Vec3 cdot = velocity_b_minus_a(sa, sb, ra, rb);
       const Vec3 impulse = -mass_scale * k.ldlt().solve(cdot + bias_rate * separation) - impulse_scale * j.linear_impulse;
       j.linear_impulse += impulse;
-      apply_impulse(sa, sb, ra, rb, -impulse);
+      apply_impulse(sa, inv_ia, sb, inv_ib, ra, rb, -impulse);
       continue;
     }
 
@@ -157,7 +163,8 @@ void JointSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_bia
     if (length < 1e-9) continue;
     const Vec3 u = separation / length;
     const Real c = length - p.length;
-    const Real k = sa.inv_mass + sb.inv_mass + ra.cross(u).dot(sa.inv_inertia * ra.cross(u)) + rb.cross(u).dot(sb.inv_inertia * rb.cross(u));
+    const Vec3 ra_cross_u = ra.cross(u), rb_cross_u = rb.cross(u);
+    const Real k = inverse_effective_mass_of_rows(sa.inv_mass + sb.inv_mass, ra_cross_u, inv_ia * ra_cross_u, rb_cross_u, inv_ib * rb_cross_u);  // eq. 13's
     if (k <= 0) continue;
     const Real cdot = u.dot(velocity_b_minus_a(sa, sb, ra, rb));
     Real impulse;
@@ -168,7 +175,7 @@ void JointSolver::solve(std::vector<BodyState>& states, Real inv_h, bool use_bia
     }
     const Real old = j.axial_impulse;
     j.axial_impulse = j.rope ? std::min(old + impulse, Real(0)) : old + impulse;  // a rope only pulls
-    apply_impulse(sa, sb, ra, rb, -(j.axial_impulse - old) * u);
+    apply_impulse(sa, inv_ia, sb, inv_ib, ra, rb, -(j.axial_impulse - old) * u);
   }
 }
 

@@ -3,7 +3,8 @@
 #pragma once
 #include "physics/body.h"
 #include "physics/joint.h"
-#include "physics/solver_state.h"
+#include "physics/body_state.h"
+#include "physics/softness.h"
 
 #include <vector>
 
@@ -14,12 +15,12 @@ Joint make_joint(const JointDef& def, const std::vector<Body>& bodies);
 
 class JointSolver {
  public:
-  // `states` has one entry per body and, last, a static entry standing for the world.
+  // The solver's bodies have one slot per body and, last, a still one standing for the world.
   // `slots`: where each body's state is (ContactSolver::slots()); the world's is after them all.
   void prepare(std::vector<Joint>& joints, const std::vector<Body>& bodies, const std::vector<int>& slots, Real hertz,
                Real damping_ratio, Real h);
-  void warm_start(std::vector<BodyState>& states) const;
-  void solve(std::vector<BodyState>& states, Real inv_h, bool use_bias);  // accumulates into the joints
+  void warm_start(SolverBodies& bodies) const;
+  void solve(SolverBodies& bodies, Real inv_h, bool use_bias);  // accumulates into the joints
 
  private:
   struct Prepared {

@@ -20,6 +20,10 @@ IMPULSE_LANES Real2 select(Mask2 m, Real2 a, Real2 b) { return m ? a : b; }
 IMPULSE_LANES Real2 max0(Real2 x) { return select(x < 0, splat(0), x); }
 IMPULSE_LANES Real2 clamp(Real2 x, Real2 low, Real2 high) { return select(x < low, low, select(high < x, high, x)); }
 IMPULSE_LANES Real2 sqrt(Real2 x) { return Real2{std::sqrt(x[0]), std::sqrt(x[1])}; }
+// The same for one lane, so that a function written once serves one pair (Real) and two (Real2).
+IMPULSE_LANES bool any(bool m) { return m; }
+IMPULSE_LANES Real select(bool m, Real a, Real b) { return m ? a : b; }
+IMPULSE_LANES Real sqrt(Real x) { return std::sqrt(x); }
 
 // A vector's components, each in two lanes.
 struct V3 {

@@ -73,13 +73,13 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
   before_b_.resize(count);
   owner_.resize(count);
   std::vector<int> last(body_count, -1);
-  for (size_t step = 0; step < count; ++step) {
-    const SweepItem& item = items[order_[step]];
-    before_a_[step] = item.a >= 0 ? last[item.a] : -1;
-    before_b_[step] = item.b >= 0 ? last[item.b] : -1;
-    if (item.a >= 0) last[item.a] = int(step);
-    if (item.b >= 0) last[item.b] = int(step);
-    owner_[step] = part[order_[step]] >= right ? 1 : 0;
+  for (size_t place = 0; place < count; ++place) {
+    const SweepItem& item = items[order_[place]];
+    before_a_[place] = item.a >= 0 ? last[item.a] : -1;
+    before_b_[place] = item.b >= 0 ? last[item.b] : -1;
+    if (item.a >= 0) last[item.a] = int(place);
+    if (item.b >= 0) last[item.b] = int(place);
+    owner_[place] = part[order_[place]] >= right ? 1 : 0;
   }
   // Each side's bodies get consecutive slots (those in no manifold go with the first side).
   std::vector<uint8_t> body_owner(body_count, 0);
@@ -95,15 +95,15 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
   }
   for (int body = 0; body < body_count; ++body) body_of_slot_[slot_of_body_[body]] = body;
   lists_.assign(2, {});
-  place_.resize(count);
-  for (size_t step = 0; step < count; ++step) {
-    place_[step] = uint32_t(lists_[owner_[step]].size());
-    lists_[owner_[step]].push_back(int(step));
+  rank_in_list_.resize(count);
+  for (size_t place = 0; place < count; ++place) {
+    rank_in_list_[place] = uint32_t(lists_[owner_[place]].size());
+    lists_[owner_[place]].push_back(int(place));
   }
   awaited_.assign(count, 0);
-  for (size_t step = 0; step < count; ++step)
-    for (int before : {before_a_[step], before_b_[step]})
-      if (before >= 0 && owner_[before] != owner_[step]) awaited_[before] = 1;
+  for (size_t place = 0; place < count; ++place)
+    for (int before : {before_a_[place], before_b_[place]})
+      if (before >= 0 && owner_[before] != owner_[place]) awaited_[before] = 1;
   if (!progress_) progress_ = std::make_unique<Progress[]>(2);
 }
 
@@ -139,10 +139,10 @@ void SweepSchedule::order_parts(const std::vector<SweepItem>& items, const std::
   }
 }
 
-void SweepSchedule::wait_for(int step, int thread, uint64_t epoch) const {
-  if (step < 0 || owner_[step] == thread) return;
-  const uint64_t target = (epoch << kEpochShift) + place_[step] + 1;
-  const std::atomic<uint64_t>& progress = progress_[owner_[step]].value;
+void SweepSchedule::wait_for(int place, int thread, uint64_t epoch) const {
+  if (place < 0 || owner_[place] == thread) return;
+  const uint64_t target = (epoch << kEpochShift) + rank_in_list_[place] + 1;
+  const std::atomic<uint64_t>& progress = progress_[owner_[place]].value;
   Backoff backoff;
   while (progress.load(std::memory_order_acquire) < target) backoff.pause();
 }

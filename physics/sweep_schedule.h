@@ -37,9 +37,9 @@ class SweepSchedule {
   // and gives each of the `body_count` bodies its slot.
   void plan(const std::vector<SweepItem>& items, int body_count, int threads);
   bool parallel() const { return lists_.size() > 1; }
-  // Whether a step is solved side by side with the next.
-  bool paired(int step) const { return paired_[step] != 0; }
-  // The items in the sweeps' order; sweep() then names them by their place in it.
+  // Whether a place is solved side by side with the next.
+  bool paired(int place) const { return paired_[place] != 0; }
+  // The items in the sweeps' order; sweep() and the solver name them by their place in it.
   const std::vector<int>& order() const { return order_; }
 
   // Where each body's solver state goes: each thread's bodies together, so that no core's
@@ -53,26 +53,26 @@ class SweepSchedule {
     epoch_ += uint64_t(count);
     return first;
   }
-  // `thread`'s share of a sweep: solve(step, 1) for its steps, in order, each once the steps before
-  // it that move the same bodies are done (on one thread: every step); solve(step, 2) for a step
+  // `thread`'s share of a sweep: solve(place, 1) for its places, in order, each once the places before
+  // it that move the same bodies are done (on one thread: every place); solve(place, 2) for a place
   // paired with the next. Threads beyond the plan's do nothing.
   template <class Solve>
   void sweep_share(int thread, uint64_t epoch, Solve&& solve) const;
-  // f(step) or f(slot) for `thread`'s steps or bodies' slots, in any order.
+  // f(place) or f(slot) for `thread`'s places or bodies' slots, in any order.
   template <class F>
-  void step_share(int thread, F&& f) const;
+  void place_share(int thread, F&& f) const;
   template <class F>
   void slot_share(int thread, F&& f) const;
 
-  // The whole sweep, or f for every step or slot, on the team (each thread its share).
+  // The whole sweep, or f for every place or slot, on the team (each thread its share).
   template <class Solve>
   void sweep(ThreadTeam& team, Solve&& solve) {
     const uint64_t epoch = new_epochs(1);
     run(team, [&](int thread) { sweep_share(thread, epoch, solve); });
   }
   template <class F>
-  void for_each_step(ThreadTeam& team, F&& f) {
-    run(team, [&](int thread) { step_share(thread, f); });
+  void for_each_place(ThreadTeam& team, F&& f) {
+    run(team, [&](int thread) { place_share(thread, f); });
   }
   template <class F>
   void for_each_slot(ThreadTeam& team, F&& f) {
@@ -87,23 +87,23 @@ class SweepSchedule {
 
  private:
   void order_parts(const std::vector<SweepItem>& items, const std::vector<uint8_t>& part);
-  void wait_for(int step, int thread, uint64_t epoch) const;
+  void wait_for(int place, int thread, uint64_t epoch) const;
 
-  // How far each thread has come in the current sweep: epoch * 2^32 + steps done. Each on its own
-  // cache line, written only after the steps that another thread waits for.
+  // How far each thread has come in the current sweep: epoch * 2^32 + places done. Each on its own
+  // cache line, written only after the places that another thread waits for.
   struct alignas(64) Progress {
     std::atomic<uint64_t> value{0};
   };
   static constexpr int kEpochShift = 32;
 
-  // Indexed by step (position in the sweep's order):
-  std::vector<int> order_;                // the item solved at each step
-  std::vector<int> before_a_, before_b_;  // the last earlier step that moves the same body, or -1
+  // Indexed by place (the position in the sweep's order):
+  std::vector<int> order_;                // the item solved at each place
+  std::vector<int> before_a_, before_b_;  // the last earlier place that moves the same body, or -1
   std::vector<uint8_t> owner_;            // the thread that solves it
-  std::vector<uint32_t> place_;           // its position in that thread's list
+  std::vector<uint32_t> rank_in_list_;    // its position in that thread's list
   std::vector<uint8_t> awaited_;          // whether another thread waits for it
   std::vector<uint8_t> paired_;           // whether it is solved side by side with the next
-  std::vector<std::vector<int>> lists_;   // each thread's steps, in order
+  std::vector<std::vector<int>> lists_;   // each thread's places, in order
   std::vector<int> slot_of_body_, body_of_slot_;
   int slot_split_ = 0;                    // the second thread's slots start here
   std::unique_ptr<Progress[]> progress_;
@@ -114,33 +114,33 @@ template <class Solve>
 void SweepSchedule::sweep_share(int thread, uint64_t epoch, Solve&& solve) const {
   if (!parallel()) {
     if (thread == 0)
-      for (int step = 0; step < int(order_.size()); step += 1 + paired_[step]) solve(step, 1 + paired_[step]);
+      for (int place = 0; place < int(order_.size()); place += 1 + paired_[place]) solve(place, 1 + paired_[place]);
     return;
   }
   if (thread >= int(lists_.size())) return;
   const std::vector<int>& list = lists_[thread];
-  for (size_t place = 0; place < list.size(); ++place) {
-    const int step = list[place];
-    const int width = 1 + paired_[step];  // a pair is one thread's, and next in its list
+  for (size_t rank = 0; rank < list.size(); ++rank) {
+    const int place = list[rank];
+    const int width = 1 + paired_[place];  // a pair is one thread's, and next in its list
     for (int k = 0; k < width; ++k) {
-      wait_for(before_a_[step + k], thread, epoch);
-      wait_for(before_b_[step + k], thread, epoch);
+      wait_for(before_a_[place + k], thread, epoch);
+      wait_for(before_b_[place + k], thread, epoch);
     }
-    solve(step, width);
-    place += width - 1;
-    if (awaited_[step] || awaited_[step + width - 1]) progress_[thread].value.store((epoch << kEpochShift) + place + 1, std::memory_order_release);
+    solve(place, width);
+    rank += width - 1;
+    if (awaited_[place] || awaited_[place + width - 1]) progress_[thread].value.store((epoch << kEpochShift) + rank + 1, std::memory_order_release);
   }
 }
 
 template <class F>
-void SweepSchedule::step_share(int thread, F&& f) const {
+void SweepSchedule::place_share(int thread, F&& f) const {
   if (!parallel()) {
     if (thread == 0)
-      for (int step = 0; step < int(order_.size()); ++step) f(step);
+      for (int place = 0; place < int(order_.size()); ++place) f(place);
     return;
   }
   if (thread < int(lists_.size()))
-    for (int step : lists_[thread]) f(step);
+    for (int place : lists_[thread]) f(place);
 }
 
 template <class F>

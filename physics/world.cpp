@@ -1,7 +1,5 @@
 #include "physics/world.h"
 
-#include "physics/teaching_methods.h"
-
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -38,15 +36,13 @@ void World::step() {
   find_contacts();
   contact_solver_.plan(contacts_, bodies_, *team_);
   load_states();
-  contact_solver_.prepare(contacts_, bodies_, states_, settings_.contact, settings_.gravity, h);
+  if (settings_.method == ResponseMethod::impulse)
+    contact_solver_.prepare(contacts_, bodies_, solver_bodies_, settings_.contact, settings_.gravity, h);
+  else
+    teaching_impulses_.assign(contacts_.size(), TeachingImpulse{});
   const Real joint_step = settings_.method == ResponseMethod::workshop || settings_.method == ResponseMethod::projection ? dt : h;
   joint_solver_.prepare(joints_, bodies_, contact_solver_.slots(), settings_.joint_hertz, settings_.joint_damping_ratio, joint_step);
-  switch (settings_.method) {
-    case ResponseMethod::impulse: solve_impulse(h); break;
-    case ResponseMethod::workshop: solve_workshop(dt); break;
-    case ResponseMethod::projection: solve_projection(dt); break;
-    case ResponseMethod::penalty: solve_penalty(h); break;
-  }
+  respond(dt, h);
 
   store_states();
   islands_.update(bodies_, contacts_, links_, anchored_, settings_.contact.friction, settings_.linear_slop, dt,
@@ -93,68 +89,6 @@ int World::choose_substeps() {
   return fewer;
 }
 
-// Box2D v3's soft step: per sub-step, integrate velocities, warm start, solve with the soft
-// position bias (bouncing the contacts that meet), integrate positions, then relax without bias.
-void World::solve_impulse(Real h) {
-  if (joints_.empty()) {
-    for (int i = 0; i < substeps_; ++i)
-      contact_solver_.substep(states_, h, [&](int slot) { integrate_velocity(states_[slot], h); },
-                              [&](int slot) { integrate_position(states_[slot], h); });
-    contact_solver_.store_impulses();
-    return;
-  }
-  for (int i = 0; i < substeps_; ++i) {
-    integrate_velocities(h);
-    joint_solver_.warm_start(states_);
-    contact_solver_.warm_start(states_);
-    joint_solver_.solve(states_, 1 / h, true);
-    contact_solver_.solve(states_, 1 / h, true);
-    integrate_positions(h);
-    contact_solver_.apply_bounce_shifts(states_);
-    joint_solver_.solve(states_, 1 / h, false);
-    contact_solver_.solve(states_, 1 / h, false);
-    contact_solver_.end_substep();
-  }
-  contact_solver_.store_impulses();
-}
-
-// Listing 1: respond to the contacts found at the start of the step, then move (one full step).
-void World::solve_workshop(Real dt) {
-  apply_workshop_impulses(contact_solver_.constraints(), states_, settings_.contact.friction, settings_.printed_eq8_sign);
-  integrate_velocities(dt);
-  solve_joints(dt, true);
-  integrate_positions(dt);
-  solve_joints(dt, false);
-}
-
-// Move, then push overlapping bodies apart. Velocities keep what gravity gave them.
-void World::solve_projection(Real dt) {
-  integrate_velocities(dt);
-  solve_joints(dt, true);
-  integrate_positions(dt);
-  solve_joints(dt, false);
-  project_apart(contact_solver_.constraints(), states_);
-}
-
-// Semi-implicit Euler per sub-step: forces from the sub-step's starting state, then velocities,
-// then positions.
-void World::solve_penalty(Real h) {
-  for (int i = 0; i < substeps_; ++i) {
-    apply_penalty_forces(contact_solver_.constraints(), states_, settings_.penalty, h);
-    integrate_velocities(h);
-    solve_joints(h, true);
-    integrate_positions(h);
-    solve_joints(h, false);
-  }
-}
-
-// The teaching methods answer contacts their own way; joints are solved as in the default method.
-void World::solve_joints(Real h, bool use_bias) {
-  if (joints_.empty()) return;
-  if (use_bias) joint_solver_.warm_start(states_);
-  joint_solver_.solve(states_, 1 / h, use_bias);
-}
-
 void World::find_contacts() {
   // Contacts of awake bodies; a sleeping island they reach wakes, and then its own contacts count.
   do {
@@ -167,27 +101,30 @@ void World::find_contacts() {
 // Each thread loads (and later stores) the bodies whose sweeps it solves: their data then stays in
 // its core's cache.
 void World::load_states() {
-  states_.resize(bodies_.size() + 1);
-  states_.back() = BodyState{};  // the world, for joints fixed in it: static
+  solver_bodies_.states.resize(bodies_.size() + 1);
+  solver_bodies_.inertia.resize(bodies_.size() + 1);
+  solver_bodies_.states.back() = BodyState{};  // the world, for joints fixed in it: static
+  solver_bodies_.inertia.back() = BodyInertia{};
   contact_solver_.for_each_slot([&](int slot) {
     Body& body = bodies_[contact_solver_.body_of_slot()[slot]];
     body.refresh_world_inertia();
-    BodyState& s = states_[slot];
+    BodyState& s = solver_bodies_.states[slot];
     s.v = body.velocity;
     s.w = body.angular_velocity;
     s.dp.setZero();
     s.dq = Quat::Identity();
     // A sleeping body is not simulated: to the solver it is as good as static.
     s.inv_mass = body.awake ? body.inv_mass : 0;
-    s.inv_inertia = body.awake ? body.inv_inertia_world : Mat3::Zero();
-    s.inertia_local = body.inertia_local.diagonal();
-    s.orientation0 = body.orientation;
-    s.gyroscopic = s.inv_mass > 0 && s.inertia_local.maxCoeff() - s.inertia_local.minCoeff() > 1e-9 * s.inertia_local.maxCoeff();
+    BodyInertia& inertia = solver_bodies_.inertia[slot];
+    inertia.inv_inertia = body.awake ? body.inv_inertia_world : Mat3::Zero();
+    inertia.inertia_local = body.inertia_local.diagonal();
+    inertia.orientation0 = body.orientation;
+    inertia.gyroscopic = s.inv_mass > 0 && inertia.inertia_local.maxCoeff() - inertia.inertia_local.minCoeff() > 1e-9 * inertia.inertia_local.maxCoeff();
   });
 }
 
 void World::integrate_velocities(Real h) {
-  contact_solver_.for_each_slot([&](int slot) { integrate_velocity(states_[slot], h); });
+  contact_solver_.for_each_slot([&](int slot) { integrate_velocity(solver_bodies_.states[slot], h); });
 }
 
 void World::integrate_velocity(BodyState& s, Real h) const {
@@ -196,7 +133,7 @@ void World::integrate_velocity(BodyState& s, Real h) const {
 }
 
 void World::integrate_positions(Real h) {
-  contact_solver_.for_each_slot([&](int slot) { integrate_position(states_[slot], h); });
+  contact_solver_.for_each_slot([&](int slot) { integrate_position(solver_bodies_.states[slot], solver_bodies_.inertia[slot], h); });
 }
 
 namespace {
@@ -263,11 +200,11 @@ void turn_free(const Vec3& inertia, const Quat& orientation0, Quat& dq, Vec3& w,
 // A body whose inertia is not the same about every axis carries the gyroscopic term here, where
 // it turns (turn_free): a tumbling plank keeps its angular momentum and energy, a box spun about
 // its middle axis flips for ever, and a fast thin one cannot gain energy.
-void World::integrate_position(BodyState& s, Real h) {
+void World::integrate_position(BodyState& s, const BodyInertia& inertia, Real h) {
   if (s.inv_mass == 0) return;
   s.dp += s.v * h;
-  if (s.gyroscopic)
-    turn_free(s.inertia_local, s.orientation0, s.dq, s.w, h, 0);
+  if (inertia.gyroscopic)
+    turn_free(inertia.inertia_local, inertia.orientation0, s.dq, s.w, h, 0);
   else
     turn(s.dq, s.w, h);
 }
@@ -279,7 +216,7 @@ void World::store_states() {
     const int index = contact_solver_.body_of_slot()[slot];
     Body& body = bodies_[index];
     if (!body.is_static() && body.awake) {
-      const BodyState& s = states_[slot];
+      const BodyState& s = solver_bodies_.states[slot];
       body.velocity = s.v;
       body.angular_velocity = s.w;
       body.position += s.dp;
@@ -304,13 +241,25 @@ void World::fill_record() const {
   record_.step = step_count_;
   record_.time = time_;
   record_.contacts.clear();
+  const bool teaching = settings_.method != ResponseMethod::impulse;
   for (size_t i = 0; i < contacts_.size(); ++i) {
     const Contact& contact = contacts_[i];
-    const ContactConstraint& c = contact_solver_.constraint_of(int(i));
-    if (contact.separation > settings_.linear_slop && c.total_normal_impulse == 0) continue;
-    record_.contacts.push_back({contact.body_a, contact.body_b, contact.point, contact.normal, contact.penetration(),
-                                c.total_normal_impulse,
-                                c.total_tangent_impulse1 * c.tangent1 + c.total_tangent_impulse2 * c.tangent2});
+    Real normal_impulse;
+    Vec3 friction_impulse;
+    if (teaching) {
+      const TeachingImpulse& t = teaching_impulses_[i];
+      Vec3 t1, t2;
+      tangent_basis(contact.normal, t1, t2);
+      normal_impulse = t.normal;
+      friction_impulse = t.tangent1 * t1 + t.tangent2 * t2;
+    } else {
+      const ContactConstraint& c = contact_solver_.constraint_of(int(i));
+      normal_impulse = c.total_normal_impulse;
+      friction_impulse = c.total_tangent_impulse1 * c.tangent1 + c.total_tangent_impulse2 * c.tangent2;
+    }
+    if (contact.separation > settings_.linear_slop && normal_impulse == 0) continue;
+    record_.contacts.push_back({contact.body_a, contact.body_b, contact.point, contact.normal, contact.penetration(), normal_impulse,
+                                friction_impulse});
   }
   record_.joints.clear();
   for (const Joint& j : joints_) {

@@ -1,12 +1,15 @@
 // The world: bodies, settings, and the fixed-step loop that moves them.
 #pragma once
 #include "physics/body.h"
+#include "physics/body_state.h"
 #include "physics/contact.h"
 #include "physics/contact_finder.h"
 #include "physics/island.h"
 #include "physics/joint_solver.h"
 #include "physics/contact_solver.h"
 #include "physics/response_method.h"
+#include "physics/rigid_body_view.h"
+#include "physics/soft_step.h"
 #include "physics/stack_sink.h"
 #include "physics/step_record.h"
 #include "physics/thread_team.h"
@@ -23,7 +26,7 @@ struct WorldSettings {
   Real time_step = Real(1) / 60;   // s, fixed
   int substeps = 12;               // solver sub-steps per step at most (Box2D v3's soft step); 12 let
                                    // the contacts be stiff (120 Hz) enough that a 20-box stack sinks
-                                   // < 1 cm, and still stable (contact_solver.cpp)
+                                   // < 1 cm, and still stable (contact_constraint.h)
   int min_substeps = 4;            // at least, when no stack needs more:
   Real stack_sink = 0.007;         // m: as few sub-steps as keep every stack from sinking more than
                                    // this into its soft contacts (stack_sink.h); 0: always `substeps`
@@ -69,17 +72,28 @@ class World {
   int64_t step_count() const { return step_count_; }
 
  private:
+  // What a teaching method applied at a contact over the step, for the records: along the normal,
+  // and on the tangents of tangent_basis(normal).
+  struct TeachingImpulse {
+    Real normal = 0, tangent1 = 0, tangent2 = 0;
+  };
+
   void find_contacts();
-  void solve_impulse(Real h);
   int choose_substeps();
+  // The response, by method (response_method.cpp).
+  void respond(Real dt, Real h);
+  void solve_impulse(Real h);
   void solve_workshop(Real dt);
   void solve_projection(Real dt);
   void solve_penalty(Real h);
+  void move_bodies(Real h);
   void solve_joints(Real h, bool use_bias);
+  template <class Page>
+  void for_each_plain_contact(Page&& page);
   void load_states();
   void integrate_velocities(Real h);
   void integrate_velocity(BodyState& s, Real h) const;
-  static void integrate_position(BodyState& s, Real h);
+  static void integrate_position(BodyState& s, const BodyInertia& inertia, Real h);
   void integrate_positions(Real h);
   void store_states();
   void check_finite() const;
@@ -90,7 +104,7 @@ class World {
   int fewer_since_ = 0, most_needed_lately_ = 0;  // steps needing fewer sub-steps, and the most they needed
   StackSink stack_sink_;
   std::vector<Body> bodies_;
-  std::vector<BodyState> states_;
+  SolverBodies solver_bodies_;  // by slot (ContactSolver::slots()), the world's still one last
   std::vector<Contact> contacts_;
   std::vector<uint8_t> awake_;
   ContactFinder contact_finder_;
@@ -100,6 +114,8 @@ class World {
   std::vector<std::pair<int, int>> links_;  // body pairs joined by joints, for the islands
   std::vector<int> anchored_;  // bodies jointed to the world: what holds their islands, for sleep
   ContactSolver contact_solver_;
+  SoftStep soft_step_;
+  std::vector<TeachingImpulse> teaching_impulses_;  // per contact, this step's, for the teaching methods' records
   std::unique_ptr<ThreadTeam> team_;  // on the heap: the solver keeps its address, and World can move
   // The lowest index store_states() found not finite, or the body count. On the heap: World moves.
   std::unique_ptr<std::atomic<int>> non_finite_body_ = std::make_unique<std::atomic<int>>(0);

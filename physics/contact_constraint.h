@@ -1,0 +1,83 @@
+// The default method's contacts as the solver builds them each step (contact_prepare.cpp): one
+// constraint per point, one per manifold (the points between one pair of bodies), its settings,
+// and the materials' mixing rules. These are what the records, the bounces and the warm start
+// read; the sweeps run on a packed copy (contact_lanes.h).
+#pragma once
+#include "physics/math.h"
+
+#include <cstdint>
+
+namespace impulse::physics {
+
+struct ContactSolverSettings {
+  Real contact_hertz = 120;            // stiffness of the position correction, at most 1/6 of the
+                                       // sub-step rate (see kMaxHertzPerSubstepRate)
+  Real contact_damping_ratio = 10;
+  Real max_push_velocity = 3;          // m/s, fastest the correction moves bodies apart
+  Real restitution_threshold = 0.5;    // m/s, slower hits do not bounce (no resting jiggle)
+  bool friction = true;                // tangential impulses on or off (exercise 1)
+  Real rolling_resistance = 0;         // c: a sphere's contact resists rolling with a torque up to
+                                       // c R N (R its radius, N the normal force); 0: a rigid ball
+                                       // on a rigid plane rolls on for ever
+};
+
+// Contacts stiffer than this fraction of the sub-step rate are not stable. Box2D's rule is 1/4; at
+// 1/4 (and 1/5) a wall of boxes one box thick (the pyramids of ../shared/bench/SCENES.md, even
+// one of 21 boxes) starts to sway out of its plane, growing over seconds, whatever the damping
+// ratio, passes or solve order; friction feeds it (without friction it stays still). At 1/6 and
+// below every pyramid measured stood still.
+constexpr Real kMaxHertzPerSubstepRate = Real(1) / 6;
+
+constexpr int kMaxManifoldPoints = 4;  // the collision routines reduce every pair to four
+
+// Rules for combining two bodies' materials (Box2D's): the larger restitution, and the geometric
+// mean of the friction coefficients.
+Real mix_restitution(Real a, Real b);
+Real mix_friction(Real a, Real b);
+
+// One contact point.
+struct alignas(64) ContactConstraint {  // a cache line of its own at each end: threads build neighbours
+  int a = -1, b = -1;                  // slots
+  uint32_t feature = 0;                // the contact's, to find it again next step
+  Vec3 normal, tangent1, tangent2;
+  Vec3 anchor_a, anchor_b;             // contact point relative to each centre, at step start
+  Real adjusted_separation = 0;        // separation - dot(anchor_a - anchor_b, normal)
+  Real normal_mass = 0;                // 1 / eq. 13's denominator
+  // The normal row's angular parts, fixed for the step: r x n, and I^-1 (r x n) for each body.
+  Vec3 ra_cross_n = Vec3::Zero(), rb_cross_n = Vec3::Zero();
+  Vec3 angular_a = Vec3::Zero(), angular_b = Vec3::Zero();
+  Real friction = 0, restitution = 0;
+  // The impulses. After prepare(): the warm start; during the sub-steps the packed lanes hold the
+  // current ones (contact_lanes.h); after store_impulses(): the last sub-step's, and the sums over
+  // the whole step for the records.
+  Real normal_impulse = 0;
+  Real total_normal_impulse = 0, total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
+  Real normal_acceleration = 0;        // of A relative to B along the normal, from gravity
+};
+
+// The points between one pair of bodies, and their shared friction.
+struct alignas(64) ManifoldConstraint {
+  int a = -1, b = -1;                  // slots
+  int first = 0, count = 0;            // its points in the constraint list
+  bool bounced = false;                // restitution applied this step
+  // Its points', which share them (one pair, one normal).
+  Vec3 normal = Vec3::Zero(), tangent1 = Vec3::Zero(), tangent2 = Vec3::Zero();
+  Real friction = 0, restitution = 0;
+  // The impulses, as for a point's: the warm start after prepare(), the lanes' during the
+  // sub-steps, the last sub-step's and the step's totals after store_impulses().
+  Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;
+  Real total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
+  Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
+  Real bounce_speed = 0;               // m/s, the speed the pair parts at after its hit
+};
+
+// A manifold's load at the end of a step, for StackSink: its last sub-step's impulse and the sum of
+// its points' normal masses. Small and apart from the constraints, so that the thread that
+// reads it does not pull in the lines of the constraints that another thread solves.
+struct ManifoldLoad {
+  int a = -1, b = -1;  // slots
+  Real impulse = 0, normal_mass = 0;
+  Vec3 normal = Vec3::UnitY();
+};
+
+}  // namespace impulse::physics

@@ -1,0 +1,38 @@
+// How the default method's sweeps run: two manifolds side by side, one in each lane of an SSE
+// register (lanes.h; Box2D v3 solves four or eight wide the same way). The maths is the
+// equations' (normal_impulse.h, friction.h); this is its data, packed lane by lane by prepare()
+// from the manifolds and their points, and copied back by store_impulses(). Each field holds the
+// first manifold's value in lane 0 and the second's in lane 1; a manifold solved alone leaves
+// lane 1 empty (the world's still slot: no mass, no friction).
+#pragma once
+#include "physics/lanes.h"
+
+namespace impulse::physics {
+
+struct PointLanes {
+  V3 anchor_a, anchor_b, ra_cross_n, rb_cross_n, angular_a, angular_b;
+  Real2 adjusted_separation, normal_mass;
+  Real2 normal_impulse, total_normal_impulse;
+};
+
+struct alignas(64) ManifoldLanes {
+  int a[2], b[2];                  // slots
+  int points = 0;                  // each manifold's
+  int first_point = 0;             // in the solver's PointLanes
+  bool can_bounce = false;         // either has restitution
+  V3 normal, tangent1, tangent2;
+  Real2 friction;
+  Real2 turns_a, turns_b;          // 1 where the body's turning moves the points along the normal
+  Real2 coupling[4][4];            // d(normal velocity at i) / d(impulse at j), for the points
+  Real2 tangent_mass1, tangent_mass2, twist_mass;
+  Real2 twist_radius;              // mean distance of the points from their centroid
+  Real2 rolling_radius;            // rolling resistance times the spheres' radius, else 0
+  // The friction rows' angular parts, fixed for the step: r x t at the points' centroid, and how
+  // an impulse along t1, t2 or a twist about n turns each body (I^-1 (r x t), I^-1 n).
+  V3 ra_cross_t1, ra_cross_t2, rb_cross_t1, rb_cross_t2;
+  V3 turn_a1, turn_a2, turn_b1, turn_b2, twist_a, twist_b;
+  Real2 tangent_impulse1, tangent_impulse2, twist_impulse;
+  Real2 total_tangent_impulse1, total_tangent_impulse2;
+};
+
+}  // namespace impulse::physics

@@ -1,0 +1,301 @@
+// Preparing the default method's contacts and warm starting them: the manifolds planned for the
+// sweeps, each point's constraint (its rows of eq. 13), each manifold's shared rows (the points'
+// coupling, friction at their centroid), last step's impulses found again by pair and feature, all
+// packed for the sweeps; and at the end of the step the impulses kept for the next.
+#include "physics/contact_solver.h"
+#include "physics/normal_impulse.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impulse::physics {
+
+Real mix_restitution(Real a, Real b) { return std::max(a, b); }
+Real mix_friction(Real a, Real b) { return std::sqrt(a * b); }
+
+namespace {
+
+// Increasing with the pair, as the contacts come (ContactFinder), whichever body the narrow phase
+// named first; and which one it was, in the lowest bit: a pair named the other way round has
+// another normal and anchors, and is not warm started from this one.
+uint64_t pair_key(int a, int b) {
+  return (uint64_t(uint32_t(std::min(a, b))) << 33) | (uint64_t(uint32_t(std::max(a, b))) << 1) | uint64_t(a > b);
+}
+
+// One contact point's constraint, without its warm start. What the points of a manifold share (one
+// pair, one normal) is taken from its first point's, once built.
+ContactConstraint make_constraint(const Contact& contact, const std::vector<Body>& bodies, const SolverBodies& solver_bodies,
+                                  const std::vector<int>& slots, const ContactSolverSettings& settings, const Vec3& gravity,
+                                  const ContactConstraint* first) {
+  const Body& body_a = bodies[contact.body_a];
+  const Body& body_b = bodies[contact.body_b];
+  ContactConstraint c;
+  c.a = slots[contact.body_a];
+  c.b = slots[contact.body_b];
+  c.feature = contact.feature;
+  const BodyState& sa = solver_bodies.states[c.a];
+  const BodyState& sb = solver_bodies.states[c.b];
+  c.normal = contact.normal;
+  if (first) {
+    c.tangent1 = first->tangent1;
+    c.tangent2 = first->tangent2;
+  } else {
+    tangent_basis(c.normal, c.tangent1, c.tangent2);
+  }
+  c.anchor_a = contact.point - body_a.position;
+  c.anchor_b = contact.point - body_b.position;
+  c.adjusted_separation = contact.separation - (c.anchor_a - c.anchor_b).dot(c.normal);
+  c.ra_cross_n = c.anchor_a.cross(c.normal);
+  c.rb_cross_n = c.anchor_b.cross(c.normal);
+  c.angular_a = solver_bodies.inertia[c.a].inv_inertia * c.ra_cross_n;
+  c.angular_b = solver_bodies.inertia[c.b].inv_inertia * c.rb_cross_n;
+  c.normal_mass = safe_inverse(inverse_effective_mass_of_rows(sa.inv_mass + sb.inv_mass, c.ra_cross_n, c.angular_a, c.rb_cross_n, c.angular_b));
+  if (first) {
+    c.friction = first->friction;
+    c.restitution = first->restitution;
+    c.normal_acceleration = first->normal_acceleration;
+    return c;
+  }
+  c.friction = settings.friction ? mix_friction(body_a.material.friction, body_b.material.friction) : 0;
+  c.restitution = mix_restitution(body_a.material.restitution, body_b.material.restitution);
+  c.normal_acceleration = ((sa.inv_mass > 0 ? gravity : Vec3::Zero()) - (sb.inv_mass > 0 ? gravity : Vec3::Zero())).dot(c.normal);
+  return c;
+}
+
+}  // namespace
+
+void ContactSolver::plan(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, ThreadTeam& team) {
+  team_ = &team;
+  // Consecutive contacts of one pair (with one normal) form its manifold, of at most four points.
+  groups_.clear();
+  for (int i = 0; i < int(contacts.size()); ++i) {
+    const Contact& contact = contacts[i];
+    if (groups_.empty() || groups_.back().second - groups_.back().first == kMaxManifoldPoints ||
+        contacts[groups_.back().first].body_a != contact.body_a || contacts[groups_.back().first].body_b != contact.body_b ||
+        contacts[groups_.back().first].normal != contact.normal)
+      groups_.push_back({i, i});
+    ++groups_.back().second;
+  }
+  auto moving = [&](int body) { return !bodies[body].is_static() && bodies[body].awake ? body : -1; };
+  std::vector<SweepItem> items(groups_.size());
+  for (size_t k = 0; k < groups_.size(); ++k) {
+    const Contact& contact = contacts[groups_[k].first];
+    // A manifold that can bounce is solved alone, in the contacts' order: a hit then passes along a
+    // row of touching bodies within one sub-step (Newton's cradle), and pairs would reorder them.
+    const bool can_bounce = mix_restitution(bodies[contact.body_a].material.restitution, bodies[contact.body_b].material.restitution) > 0;
+    items[k] = {moving(contact.body_a), moving(contact.body_b), bodies[contact.body_a].position, bodies[contact.body_b].position,
+                can_bounce ? 0 : groups_[k].second - groups_[k].first};
+  }
+  schedule_.plan(items, int(bodies.size()), team.size());
+}
+
+void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, const SolverBodies& solver_bodies,
+                            const ContactSolverSettings& settings, const Vec3& gravity, Real h) {
+  settings_ = settings;
+  const Real hertz = std::min(settings.contact_hertz, kMaxHertzPerSubstepRate / h);
+  // One stiffness for every contact. Box2D makes contacts with static bodies twice as stiff; so
+  // made, a 1 kg box between the ground and a 100 kg box rattles at 0.1-0.3 m/s for ever: its
+  // contact with the ground, four times as stiff, and the one above it give it a mode at about
+  // 2.2 times the contacts' frequency, beyond what a sub-step at 1/6 of its rate holds.
+  softness_ = make_softness(hertz, settings.contact_damping_ratio, h);
+  // The constraints are laid out in the sweeps' order: a thread's share is then one block of memory.
+  const std::vector<int>& order = schedule_.order();
+  // Last step's constraints, if it stored its impulses, are the warm start: found by pair, then
+  // by feature. Each thread reads what it built last step.
+  if (impulses_stored_) {
+    std::swap(previous_warm_points_, warm_points_);
+    std::swap(previous_warm_manifolds_, warm_manifolds_);
+    std::swap(previous_pairs_, pairs_);
+  } else {
+    previous_pairs_.clear();
+  }
+  impulses_stored_ = false;
+  // Impulses are per sub-step: when the sub-step changes length, so do they.
+  const Real warm_scale = stored_h_ > 0 ? h / stored_h_ : 1;
+  h_ = h;
+  manifolds_.resize(order.size());
+  constraints_.resize(contacts.size());
+  constraint_of_contact_.resize(contacts.size());
+  first_of_place_.resize(order.size());
+  pairs_.resize(order.size());
+  for (size_t place = 0, next = 0; place < order.size(); ++place) {
+    const auto [first, end] = groups_[order[place]];
+    first_of_place_[place] = int(next);
+    for (int i = first; i < end; ++i) constraint_of_contact_[i] = int(next++);
+    pairs_[order[place]] = {pair_key(contacts[first].body_a, contacts[first].body_b), int(place)};
+  }
+  // Blocks of two manifolds side by side where the schedule paired them, else of one.
+  world_slot_ = int(solver_bodies.states.size()) - 1;
+  lane_of_place_.resize(order.size());
+  int blocks = 0, points = 0;
+  for (int place = 0; place < int(order.size()); ++blocks) {
+    const int width = schedule_.paired(place) ? 2 : 1;
+    for (int l = 0; l < width; ++l) lane_of_place_[place + l] = {blocks, l};
+    place += width;
+  }
+  lanes_.resize(blocks);
+  for (int place = 0, block = 0; place < int(order.size()); ++block) {
+    lanes_[block].first_point = points;
+    points += groups_[order[place]].second - groups_[order[place]].first;
+    place += schedule_.paired(place) ? 2 : 1;
+  }
+  lane_points_.resize(points);
+  find_previous_pairs();
+  // Each thread builds the manifolds it sweeps, from the states and bodies it loaded.
+  schedule_.run(*team_, [&](int thread) {
+    schedule_.place_share(thread, [&](int place) { prepare_manifold(place, contacts, bodies, solver_bodies, gravity, warm_scale); });
+  });
+}
+
+// The manifold at `place`: its points' constraints, warm started from last step's impulses of the
+// same pair and feature, its shared rows, and its lane.
+void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                                     const SolverBodies& solver_bodies, const Vec3& gravity, Real warm_scale) {
+  const std::vector<int>& slots = schedule_.slots();
+  const int manifold = schedule_.order()[place];
+  const auto [first, end] = groups_[manifold];
+  ManifoldConstraint& m = manifolds_[place];
+  m = ManifoldConstraint{};
+  m.a = slots[contacts[first].body_a];
+  m.b = slots[contacts[first].body_b];
+  m.first = first_of_place_[place];
+  m.count = end - first;
+  const auto [same_pair, other_pair] = previous_range_[manifold];
+  for (int i = 0; i < m.count; ++i) {
+    ContactConstraint& c = constraints_[m.first + i];
+    c = make_constraint(contacts[first + i], bodies, solver_bodies, slots, settings_, gravity, i > 0 ? &constraints_[m.first] : nullptr);
+    for (int previous = same_pair; previous != other_pair; ++previous) {
+      const ManifoldWarm& pm = previous_warm_manifolds_[previous_pairs_[previous].manifold];
+      for (int j = 0; j < pm.count; ++j)
+        if (previous_warm_points_[pm.first + j].feature == c.feature) c.normal_impulse = warm_scale * previous_warm_points_[pm.first + j].normal_impulse;
+    }
+  }
+  ManifoldLanes& block = begin_lanes(place, m);
+  prepare_shared_rows(m, block, lane_of_place_[place].lane, bodies[contacts[first].body_a], bodies[contacts[first].body_b], solver_bodies);
+  if (same_pair != other_pair) {
+    warm_start_friction(m, previous_warm_manifolds_[previous_pairs_[other_pair - 1].manifold]);
+    m.tangent_impulse1 *= warm_scale;
+    m.tangent_impulse2 *= warm_scale;
+    m.twist_impulse *= warm_scale;
+  }
+  fill_lanes(place, m);
+}
+
+// For each of this step's manifolds (in the contacts' order), the range of last step's with the
+// same pair. Both lists come by pair, as the contacts do (ContactFinder): one merge, no search.
+void ContactSolver::find_previous_pairs() {
+  auto by_pair = [](const PairPlace& x, const PairPlace& y) { return x.key != y.key ? x.key < y.key : x.manifold < y.manifold; };
+  if (!std::is_sorted(previous_pairs_.begin(), previous_pairs_.end(), by_pair)) std::sort(previous_pairs_.begin(), previous_pairs_.end(), by_pair);
+  previous_range_.resize(pairs_.size());
+  int begin = 0;
+  const int count = int(previous_pairs_.size());
+  for (size_t k = 0; k < pairs_.size(); ++k) {
+    const uint64_t key = pairs_[k].key;
+    if (k > 0 && key < pairs_[k - 1].key)  // out of order after all: search from the start
+      begin = int(std::lower_bound(previous_pairs_.begin(), previous_pairs_.end(), PairPlace{key, -1}, by_pair) - previous_pairs_.begin());
+    while (begin < count && previous_pairs_[begin].key < key) ++begin;
+    int end = begin;
+    while (end < count && previous_pairs_[end].key == key) ++end;
+    previous_range_[k] = {begin, end};
+  }
+}
+
+// The shared parts of a manifold whose points are built, and the rows its lane `l` of `block` is
+// solved with: the points' coupling (eq. 13's denominator between points), and friction at their
+// centroid.
+void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& block, int l, const Body& body_a, const Body& body_b,
+                                        const SolverBodies& solver_bodies) const {
+  const BodyState& sa = solver_bodies.states[m.a];
+  const BodyState& sb = solver_bodies.states[m.b];
+  const Mat3& inv_ia = solver_bodies.inertia[m.a].inv_inertia;
+  const Mat3& inv_ib = solver_bodies.inertia[m.b].inv_inertia;
+  const ContactConstraint& first = constraints_[m.first];
+  m.normal = first.normal;
+  m.tangent1 = first.tangent1;
+  m.tangent2 = first.tangent2;
+  m.friction = first.friction;
+  m.restitution = first.restitution;
+  block.can_bounce = block.can_bounce || m.restitution > 0;
+  Vec3 centre = Vec3::Zero();
+  for (int i = 0; i < m.count; ++i) centre += constraints_[m.first + i].anchor_a;
+  centre /= m.count;  // relative to A
+  const Vec3 centre_a = centre, centre_b = centre + (first.anchor_b - first.anchor_a);
+  block.tangent_mass1[l] = safe_inverse(inverse_effective_mass(sa.inv_mass, inv_ia, sb.inv_mass, inv_ib, centre_a, centre_b, first.tangent1));
+  block.tangent_mass2[l] = safe_inverse(inverse_effective_mass(sa.inv_mass, inv_ia, sb.inv_mass, inv_ib, centre_a, centre_b, first.tangent2));
+  // How an impulse at point j changes the normal velocity at point i. Symmetric, and the points
+  // share the normal.
+  for (int i = 0; i < m.count; ++i)
+    for (int j = i; j < m.count; ++j) {
+      const ContactConstraint& ci = constraints_[m.first + i];
+      const ContactConstraint& cj = constraints_[m.first + j];
+      block.coupling[i][j][l] = block.coupling[j][i][l] = inverse_effective_mass_of_rows(
+          (sa.inv_mass + sb.inv_mass) * first.normal.dot(first.normal), ci.ra_cross_n, cj.angular_a, ci.rb_cross_n, cj.angular_b);
+    }
+  block.twist_mass[l] = safe_inverse(first.normal.dot((inv_ia + inv_ib) * first.normal));
+  const Vec3 ra_cross_t1 = centre_a.cross(first.tangent1), ra_cross_t2 = centre_a.cross(first.tangent2);
+  const Vec3 rb_cross_t1 = centre_b.cross(first.tangent1), rb_cross_t2 = centre_b.cross(first.tangent2);
+  set_lane(block.ra_cross_t1, l, ra_cross_t1);
+  set_lane(block.ra_cross_t2, l, ra_cross_t2);
+  set_lane(block.rb_cross_t1, l, rb_cross_t1);
+  set_lane(block.rb_cross_t2, l, rb_cross_t2);
+  set_lane(block.turn_a1, l, inv_ia * ra_cross_t1);
+  set_lane(block.turn_a2, l, inv_ia * ra_cross_t2);
+  set_lane(block.turn_b1, l, inv_ib * rb_cross_t1);
+  set_lane(block.turn_b2, l, inv_ib * rb_cross_t2);
+  set_lane(block.twist_a, l, inv_ia * first.normal);
+  set_lane(block.twist_b, l, inv_ib * first.normal);
+  Real twist_radius = 0;
+  for (int i = 0; i < m.count; ++i) twist_radius += (constraints_[m.first + i].anchor_a - centre).norm() / m.count;
+  // One point of a sphere: the soft contact presses a disc of radius a = sqrt(2 R d) at depth d
+  // (R = 1 / (1/R_a + 1/R_b), a flat face's 1/R being 0), over which friction resists a twist up
+  // to 2/3 mu N a (uniform pressure). Without it a sphere spinning about the normal spins for ever.
+  if (m.count == 1) {
+    auto curvature = [](const Body& body) { return body.shape.type == ShapeType::sphere ? 1 / body.shape.radius : Real(0); };
+    const Real k = curvature(body_a) + curvature(body_b);
+    const Real depth = std::max(-(first.adjusted_separation + (first.anchor_a - first.anchor_b).dot(first.normal)), Real(0));
+    if (k > 0) twist_radius = Real(2) / 3 * std::sqrt(2 * depth / k);
+    if (k > 0) block.rolling_radius[l] = settings_.rolling_resistance / k;
+  }
+  block.twist_radius[l] = twist_radius;
+  // A sphere's surface stays where it is as it turns, and a still body does not turn.
+  block.turns_a[l] = sa.inv_mass > 0 && body_a.shape.type != ShapeType::sphere;
+  block.turns_b[l] = sb.inv_mass > 0 && body_b.shape.type != ShapeType::sphere;
+}
+
+// Last step's friction impulses, on this step's tangents.
+void ContactSolver::warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous) {
+  m.tangent_impulse1 = previous.friction_impulse.dot(m.tangent1);
+  m.tangent_impulse2 = previous.friction_impulse.dot(m.tangent2);
+  m.twist_impulse = previous.twist_impulse;
+}
+
+void ContactSolver::store_impulses() {
+  impulses_stored_ = true;
+  stored_h_ = h_;
+  loads_.resize(manifolds_.size());
+  warm_manifolds_.resize(manifolds_.size());
+  warm_points_.resize(constraints_.size());
+  schedule_.for_each_place(*team_, [&](int place) {
+    copy_back(place);
+    const ManifoldConstraint& m = manifolds_[place];
+    warm_manifolds_[place] = {m.first, m.count, m.tangent_impulse1 * m.tangent1 + m.tangent_impulse2 * m.tangent2, m.twist_impulse};
+    for (int i = 0; i < m.count; ++i) warm_points_[m.first + i] = {constraints_[m.first + i].feature, constraints_[m.first + i].normal_impulse};
+    ManifoldLoad& load = loads_[place];
+    load = {m.a, m.b, 0, 0, constraints_[m.first].normal};
+    for (int i = 0; i < m.count; ++i) {
+      load.impulse += constraints_[m.first + i].normal_impulse;
+      load.normal_mass += constraints_[m.first + i].normal_mass;
+    }
+    // For the records: each point's share of the friction, by its share of the normal impulse.
+    Real normal_sum = 0;
+    for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].total_normal_impulse;
+    for (int i = 0; i < m.count; ++i) {
+      ContactConstraint& c = constraints_[m.first + i];
+      const Real share = normal_sum > 0 ? c.total_normal_impulse / normal_sum : Real(1) / m.count;
+      c.total_tangent_impulse1 = share * m.total_tangent_impulse1;
+      c.total_tangent_impulse2 = share * m.total_tangent_impulse2;
+    }
+  });
+}
+
+}  // namespace impulse::physics

@@ -1,0 +1,80 @@
+// The normal impulse (eq. 13, with 1 + e as ERRATA.md corrects it):
+//
+//   J = -(1 + e) v_ab . n / ( n.n (1/m_a + 1/m_b) + [(I_a^-1 (r_a x n)) x r_a + (I_b^-1 (r_b x n)) x r_b] . n )
+//
+// Its denominator is the inverse of the pair's effective mass along n; every impulse along one
+// direction in this engine divides by it (contacts' normal and friction rows, bounces, joints'
+// axial rows, the workshop's listing). The numerator's forms are the methods': the default's soft
+// row below (target "stop approaching", restitution answered in restitution.cpp), and the
+// listing's verbatim form (workshop_listing.cpp).
+#pragma once
+#include "physics/body_state.h"
+#include "physics/lanes.h"
+#include "physics/softness.h"
+
+namespace impulse::physics {
+
+// eq. 13's denominator as printed: n.n (1/m_a + 1/m_b) + n . [(I_a^-1 (r_a x n)) x r_a + ...], along
+// any direction d. `d_dot_d` is the printed n.n; the solver's directions are unit and pass 1 (which
+// multiplies exactly, so the result is 1/m_a + 1/m_b + d . [...]).
+inline Real inverse_effective_mass(Real inv_mass_a, const Mat3& inv_inertia_a, Real inv_mass_b, const Mat3& inv_inertia_b,
+                                   const Vec3& ra, const Vec3& rb, const Vec3& d, Real d_dot_d = 1) {
+  const Vec3 ang_a = (inv_inertia_a * ra.cross(d)).cross(ra);
+  const Vec3 ang_b = (inv_inertia_b * rb.cross(d)).cross(rb);
+  return d_dot_d * (inv_mass_a + inv_mass_b) + d.dot(ang_a + ang_b);
+}
+
+// The same denominator from a constraint's rows, prepared once per step: r x n and I^-1 (r x n)
+// for each body, so that n . [(I^-1 (r x n)) x r] is the dot product (r x n) . I^-1 (r x n). With
+// the rows of two points i and j of one pair (one normal) it says how an impulse at j changes the
+// normal velocity at i: the manifold's coupling matrix, whose diagonal is each point's own.
+// `linear` is (1/m_a + 1/m_b) times n.n (1 for a unit n). Equal to inverse_effective_mass() but
+// for rounding: the two sum in different orders, and each caller keeps the one its results were
+// measured with.
+inline Real inverse_effective_mass_of_rows(Real linear, const Vec3& ra_cross_n_i, const Vec3& angular_a_j,
+                                           const Vec3& rb_cross_n_i, const Vec3& angular_b_j) {
+  return linear + ra_cross_n_i.dot(angular_a_j) + rb_cross_n_i.dot(angular_b_j);
+}
+
+// The effective mass itself, 0 where nothing can move.
+inline Real safe_inverse(Real k) { return k > 0 ? 1 / k : 0; }
+
+// A point's separation now, from how far each body has moved and turned since the step began:
+// its step-start separation along n, adjusted by the anchors (adjusted_separation = separation -
+// (r_a - r_b) . n), plus the motion of the two anchors along n.
+inline Real separation_now(const Vec3& normal, const Vec3& ra, const Vec3& rb, Real adjusted_separation, const BodyState& sa,
+                           const BodyState& sb) {
+  const Vec3 moved = (sa.dp - sb.dp) + (rotate(sa.dq, ra) - rotate(sb.dq, rb));
+  return moved.dot(normal) + adjusted_separation;
+}
+
+// The default method's normal row for one point, two pairs side by side (lanes.h): the new
+// accumulated impulse is max(rhs - mass vn, 0) (eq. 13's J, clamped to push only), where `mass`
+// and `rhs` are set once per pass by soft_normal_row(). The target is "stop approaching" with a
+// soft position correction (Box2D v3's soft step) in the biased pass; restitution is a bounce's.
+struct NormalRow {
+  Real2 mass, rhs;
+};
+
+// `separation` now; `impulse` the point's accumulated impulse; `normal_mass` 1 / eq. 13's
+// denominator. A speculative point (apart) may close its gap this sub-step, no further; the relax
+// pass leaves it be (mass 0): the next solve clamps it anyway, and slowing a body before it
+// touches would lose the speed it hits with.
+template <bool UseBias>
+[[gnu::always_inline]] inline NormalRow soft_normal_row(Real2 separation, Real2 impulse, Real2 normal_mass, const Softness& softness,
+                                                        Real inv_h, Real2 max_push) {
+  const Mask2 apart = separation > 0;
+  if constexpr (UseBias) {
+    const Real2 soft_bias = splat(softness.bias_rate) * separation;
+    const Real2 bias = select(apart, separation * inv_h, select(soft_bias < max_push, max_push, soft_bias));
+    const Real2 mass = select(apart, normal_mass, normal_mass * splat(softness.mass_scale));
+    return {mass, impulse - mass * bias - select(apart, splat(0), splat(softness.impulse_scale)) * impulse};
+  } else {
+    return {select(apart, splat(0), normal_mass), impulse};
+  }
+}
+
+// The row's new accumulated impulse at normal velocity vn: pushing only.
+[[gnu::always_inline]] inline Real2 clamped_normal_impulse(const NormalRow& row, Real2 vn) { return max0(row.rhs - row.mass * vn); }
+
+}  // namespace impulse::physics

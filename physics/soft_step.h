@@ -1,0 +1,83 @@
+// The stages of one sub-step of the default method (Box2D v3's soft step; its solver.c lists them
+// the same way), written once. Contacts and joints are its participants: each stage runs the
+// joints (on one thread) and then the contacts' sweep over every manifold in the sweeps' order.
+//
+//   1. integrate velocities (gravity)
+//   2. warm start: last sub-step's impulses applied again
+//   3. solve with the soft position bias; a contact that meets fast enough bounces (restitution.h)
+//   4. integrate positions
+//   5. take back the bounces' shifts (only in a sub-step in which something bounced)
+//   6. relax: solve again without the bias, then add the sub-step's impulses to the step's totals
+//
+// The whole sub-step is one job of the thread team: its threads meet at a barrier between the
+// stages instead of being woken for each.
+#pragma once
+#include "physics/contact_solver.h"
+#include "physics/joint_solver.h"
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+
+namespace impulse::physics {
+
+class SoftStep {
+ public:
+  // One sub-step of h. `joints` may be null (no joints). integrate_velocity(slot) and
+  // integrate_position(slot) move one body's state.
+  template <class IntegrateVelocity, class IntegratePosition>
+  void substep(ContactSolver& contacts, JointSolver* joints, SolverBodies& bodies, Real h, IntegrateVelocity&& integrate_velocity,
+               IntegratePosition&& integrate_position);
+
+ private:
+  // Per thread that sweeps (two at most): the last sub-step epoch in which one of its manifolds
+  // bounced. On the heap, as the sweeps' progress counters: atomics cannot move with the world.
+  struct alignas(64) BounceEpoch {
+    std::atomic<uint64_t> value{0};
+  };
+  std::unique_ptr<BounceEpoch[]> bounced_ = std::make_unique<BounceEpoch[]>(2);
+};
+
+template <class IntegrateVelocity, class IntegratePosition>
+void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodies& bodies, Real h,
+                       IntegrateVelocity&& integrate_velocity, IntegratePosition&& integrate_position) {
+  SweepSchedule& schedule = contacts.schedule();
+  ThreadTeam& team = contacts.team();
+  const uint64_t epoch = schedule.new_epochs(4);
+  const bool parallel = schedule.parallel();
+  auto meet = [&] { if (parallel) team.barrier(); };
+  // The joints are solved by the first thread alone, between the contacts' sweeps.
+  auto joint_stage = [&](int thread, auto&& stage) {
+    if (!joints) return;
+    if (thread == 0) stage();
+    meet();
+  };
+  schedule.run(team, [&](int thread) {
+    schedule.slot_share(thread, integrate_velocity);
+    meet();
+    joint_stage(thread, [&] { joints->warm_start(bodies); });
+    schedule.sweep_share(thread, epoch, [&](int place, int) { contacts.warm_start_manifolds(place, bodies.states); });
+    meet();
+    joint_stage(thread, [&] { joints->solve(bodies, 1 / h, true); });
+    bool bounced = false;
+    schedule.sweep_share(thread, epoch + 1, [&](int place, int width) { bounced |= contacts.solve_manifolds(place, width, bodies, 1 / h, true); });
+    if (bounced) bounced_[thread].value.store(epoch, std::memory_order_relaxed);  // only threads 0 and 1 have manifolds
+    meet();
+    schedule.slot_share(thread, integrate_position);
+    meet();
+    // Most sub-steps nothing bounces (resting piles): then no sweep to take shifts back. The
+    // barriers order the flags; every thread reads the same and takes the same way.
+    if (bounced_[0].value.load(std::memory_order_relaxed) == epoch || bounced_[1].value.load(std::memory_order_relaxed) == epoch) {
+      schedule.sweep_share(thread, epoch + 2, [&](int place, int width) { contacts.take_back_bounce_shifts(place, width, bodies.states); });
+      meet();
+    }
+    joint_stage(thread, [&] { joints->solve(bodies, 1 / h, false); });
+    schedule.sweep_share(thread, epoch + 3, [&](int place, int width) {
+      contacts.solve_manifolds(place, width, bodies, 1 / h, false);
+      contacts.add_to_totals(place);  // the relax pass is the sub-step's last word on them
+    });
+  });
+  contacts.end_substep();
+}
+
+}  // namespace impulse::physics
