@@ -9,6 +9,7 @@ namespace impulse::physics {
 struct Material {
   Real restitution = 0.5;  // coefficient of restitution e, 0..1
   Real friction = 0.5;     // Coulomb coefficient mu, >= 0
+  int kind = -1;           // which of the scene's named materials, for its pairs (materials.h); -1: none
 };
 
 // What a scene asks for. Mass comes from `mass` when > 0, else from density x volume.

@@ -30,11 +30,6 @@ constexpr Real kMaxHertzPerSubstepRate = Real(1) / 6;
 
 constexpr int kMaxManifoldPoints = 4;  // the collision routines reduce every pair to four
 
-// Rules for combining two bodies' materials (Box2D's): the larger restitution, and the geometric
-// mean of the friction coefficients.
-Real mix_restitution(Real a, Real b);
-Real mix_friction(Real a, Real b);
-
 // One contact point.
 struct alignas(64) ContactConstraint {  // a cache line of its own at each end: threads build neighbours
   int a = -1, b = -1;                  // slots
@@ -59,7 +54,6 @@ struct alignas(64) ContactConstraint {  // a cache line of its own at each end: 
 struct alignas(64) ManifoldConstraint {
   int a = -1, b = -1;                  // slots
   int first = 0, count = 0;            // its points in the constraint list
-  bool bounced = false;                // restitution applied this step
   // Its points', which share them (one pair, one normal).
   Vec3 normal = Vec3::Zero(), tangent1 = Vec3::Zero(), tangent2 = Vec3::Zero();
   Real friction = 0, restitution = 0;

@@ -95,6 +95,30 @@ void ContactSolver::warm_start_manifolds(int place, std::vector<BodyState>& stat
   }
 }
 
+bool ContactSolver::bounce_lane(int place, int lane_in_call, SolverBodies& solver_bodies, Real h) {
+  ManifoldLanes& block = lanes_[lane_of_place_[place].block];
+  ManifoldConstraint& m = manifolds_[place + lane_in_call];
+  BounceImpulses applied;
+  if (!block.can_bounce || !bounce(m, &constraints_[m.first], solver_bodies.states[m.a], solver_bodies.inertia[m.a],
+                                   solver_bodies.states[m.b], solver_bodies.inertia[m.b],
+                                   impact_threshold(settings_.restitution_threshold, gravity_direction_, m.normal), h, applied))
+    return false;
+  const int lane = lane_of_place_[place + lane_in_call].lane;
+  for (int i = 0; i < m.count; ++i)
+    if (applied.hit[i]) lane_points_[block.first_point + i].total_normal_impulse[lane] += applied.normal[i];
+  if (applied.friction) {
+    block.total_tangent_impulse1[lane] += applied.tangent1;
+    block.total_tangent_impulse2[lane] += applied.tangent2;
+  }
+  return true;
+}
+
+bool ContactSolver::bounce_manifolds(int place, int width, SolverBodies& solver_bodies, Real h) {
+  bool bounced = false;
+  for (int l = 0; l < width; ++l) bounced |= bounce_lane(place, l, solver_bodies, h);
+  return bounced;
+}
+
 bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_bodies, Real inv_h, bool use_bias) {
   ManifoldLanes& block = lanes_[lane_of_place_[place].block];
   // A manifold that bounces is answered by its bounce alone in this solve (restitution.h); the
@@ -102,22 +126,8 @@ bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_b
   Mask2 solved = {0, 0};
   bool bounced = false;
   for (int l = 0; l < width; ++l) {
-    ManifoldConstraint& m = manifolds_[place + l];
-    BounceImpulses applied;
-    if (use_bias && block.can_bounce &&
-        bounce(m, &constraints_[m.first], solver_bodies.states[m.a], solver_bodies.inertia[m.a], solver_bodies.states[m.b],
-               solver_bodies.inertia[m.b], settings_.restitution_threshold, 1 / inv_h, applied)) {
-      bounced = true;
-      const int lane = lane_of_place_[place + l].lane;
-      for (int i = 0; i < m.count; ++i)
-        if (applied.hit[i]) lane_points_[block.first_point + i].total_normal_impulse[lane] += applied.normal[i];
-      if (applied.friction) {
-        block.total_tangent_impulse1[lane] += applied.tangent1;
-        block.total_tangent_impulse2[lane] += applied.tangent2;
-      }
-    } else {
-      solved[l] = -1;
-    }
+    if (use_bias && bounce_lane(place, l, solver_bodies, 1 / inv_h)) bounced = true;
+    else solved[l] = -1;
   }
   if (!any(solved)) return bounced;
   // The points, the direction and the pass known to the compiler: the rows stay in registers.

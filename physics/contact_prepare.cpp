@@ -10,9 +10,6 @@
 
 namespace impulse::physics {
 
-Real mix_restitution(Real a, Real b) { return std::max(a, b); }
-Real mix_friction(Real a, Real b) { return std::sqrt(a * b); }
-
 namespace {
 
 // Increasing with the pair, as the contacts come (ContactFinder), whichever body the narrow phase
@@ -25,8 +22,8 @@ uint64_t pair_key(int a, int b) {
 // One contact point's constraint, without its warm start. What the points of a manifold share (one
 // pair, one normal) is taken from its first point's, once built.
 ContactConstraint make_constraint(const Contact& contact, const std::vector<Body>& bodies, const SolverBodies& solver_bodies,
-                                  const std::vector<int>& slots, const ContactSolverSettings& settings, const Vec3& gravity,
-                                  const ContactConstraint* first) {
+                                  const std::vector<int>& slots, const ContactSolverSettings& settings,
+                                  const std::vector<PairMaterial>& pair_materials, const Vec3& gravity, const ContactConstraint* first) {
   const Body& body_a = bodies[contact.body_a];
   const Body& body_b = bodies[contact.body_b];
   ContactConstraint c;
@@ -56,16 +53,19 @@ ContactConstraint make_constraint(const Contact& contact, const std::vector<Body
     c.normal_acceleration = first->normal_acceleration;
     return c;
   }
-  c.friction = settings.friction ? mix_friction(body_a.material.friction, body_b.material.friction) : 0;
-  c.restitution = mix_restitution(body_a.material.restitution, body_b.material.restitution);
+  const ContactMaterial material = contact_material(body_a.material, body_b.material, pair_materials);
+  c.friction = settings.friction ? material.friction : 0;
+  c.restitution = material.restitution;
   c.normal_acceleration = ((sa.inv_mass > 0 ? gravity : Vec3::Zero()) - (sb.inv_mass > 0 ? gravity : Vec3::Zero())).dot(c.normal);
   return c;
 }
 
 }  // namespace
 
-void ContactSolver::plan(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, ThreadTeam& team) {
+void ContactSolver::plan(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                        const std::vector<PairMaterial>& pair_materials, ThreadTeam& team) {
   team_ = &team;
+  pair_materials_ = &pair_materials;
   // Consecutive contacts of one pair (with one normal) form its manifold, of at most four points.
   groups_.clear();
   for (int i = 0; i < int(contacts.size()); ++i) {
@@ -82,7 +82,8 @@ void ContactSolver::plan(const std::vector<Contact>& contacts, const std::vector
     const Contact& contact = contacts[groups_[k].first];
     // A manifold that can bounce is solved alone, in the contacts' order: a hit then passes along a
     // row of touching bodies within one sub-step (Newton's cradle), and pairs would reorder them.
-    const bool can_bounce = mix_restitution(bodies[contact.body_a].material.restitution, bodies[contact.body_b].material.restitution) > 0;
+    const bool can_bounce =
+        contact_material(bodies[contact.body_a].material, bodies[contact.body_b].material, pair_materials).restitution > 0;
     items[k] = {moving(contact.body_a), moving(contact.body_b), bodies[contact.body_a].position, bodies[contact.body_b].position,
                 can_bounce ? 0 : groups_[k].second - groups_[k].first};
   }
@@ -92,6 +93,8 @@ void ContactSolver::plan(const std::vector<Contact>& contacts, const std::vector
 void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, const SolverBodies& solver_bodies,
                             const ContactSolverSettings& settings, const Vec3& gravity, Real h) {
   settings_ = settings;
+  const Real g = gravity.norm();
+  gravity_direction_ = g > 0 ? Vec3(gravity / g) : Vec3::Zero();
   const Real hertz = std::min(settings.contact_hertz, kMaxHertzPerSubstepRate / h);
   // One stiffness for every contact. Box2D makes contacts with static bodies twice as stiff; so
   // made, a 1 kg box between the ground and a 100 kg box rattles at 0.1-0.3 m/s for ever: its
@@ -163,7 +166,7 @@ void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& cont
   const auto [same_pair, other_pair] = previous_range_[manifold];
   for (int i = 0; i < m.count; ++i) {
     ContactConstraint& c = constraints_[m.first + i];
-    c = make_constraint(contacts[first + i], bodies, solver_bodies, slots, settings_, gravity, i > 0 ? &constraints_[m.first] : nullptr);
+    c = make_constraint(contacts[first + i], bodies, solver_bodies, slots, settings_, *pair_materials_, gravity, i > 0 ? &constraints_[m.first] : nullptr);
     for (int previous = same_pair; previous != other_pair; ++previous) {
       const ManifoldWarm& pm = previous_warm_manifolds_[previous_pairs_[previous].manifold];
       for (int j = 0; j < pm.count; ++j)

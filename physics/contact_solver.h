@@ -18,6 +18,7 @@
 #include "physics/contact.h"
 #include "physics/contact_constraint.h"
 #include "physics/contact_lanes.h"
+#include "physics/materials.h"
 #include "physics/softness.h"
 #include "physics/sweep_schedule.h"
 #include "physics/thread_team.h"
@@ -31,7 +32,9 @@ class ContactSolver {
  public:
   // Plans this step's sweeps over the contacts' manifolds and how `team` shares them; slots() then
   // says where each body's state goes (the solver's indices, in states and in the constraints).
-  void plan(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, ThreadTeam& team);
+  // `pair_materials` (materials.h) must outlive the step.
+  void plan(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, const std::vector<PairMaterial>& pair_materials,
+            ThreadTeam& team);
   const std::vector<int>& slots() const { return schedule_.slots(); }
   const std::vector<int>& body_of_slot() const { return schedule_.bodies(); }
   // Builds the constraints of the planned contacts, warm started from the last step's impulses
@@ -45,6 +48,8 @@ class ContactSolver {
   void warm_start_manifolds(int place, std::vector<BodyState>& states) const;
   // Returns whether one bounced (restitution; only with use_bias).
   bool solve_manifolds(int place, int width, SolverBodies& solver_bodies, Real inv_h, bool use_bias);
+  // The bounces alone, for the impact passes after the biased solve (soft_step.h): whether one bounced.
+  bool bounce_manifolds(int place, int width, SolverBodies& solver_bodies, Real h);
   void take_back_bounce_shifts(int place, int width, std::vector<BodyState>& states);  // after the positions
   void add_to_totals(int place);  // the sub-step's impulses to the step's totals, after the relax pass
   void end_substep() { backwards_ = !backwards_; }  // the next sub-step goes through the points the other way
@@ -79,6 +84,7 @@ class ContactSolver {
   void prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& block, int lane, const Body& body_a, const Body& body_b,
                            const SolverBodies& solver_bodies) const;
   static void warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous);
+  bool bounce_lane(int place, int lane_in_call, SolverBodies& solver_bodies, Real h);
   ManifoldLanes& begin_lanes(int place, const ManifoldConstraint& m);
   void fill_lanes(int place, const ManifoldConstraint& m);
   void copy_back(int place);
@@ -122,9 +128,11 @@ class ContactSolver {
   bool impulses_stored_ = false;  // store_impulses() since the last prepare()
   Real h_ = 0, stored_h_ = 0;      // this step's sub-step, and the stored impulses'
   ContactSolverSettings settings_;
+  Vec3 gravity_direction_ = Vec3::Zero();  // unit, or zero without gravity: which contacts it loads (impact_threshold)
   Softness softness_;  // every contact's, for this step's sub-steps (prepare())
   bool backwards_ = false;  // this sub-step's order of a manifold's points (solve_lanes)
   ThreadTeam* team_ = nullptr;
+  const std::vector<PairMaterial>* pair_materials_ = nullptr;  // the world's (plan())
   SweepSchedule schedule_;
 };
 

@@ -88,8 +88,8 @@ void World::for_each_plain_contact(Page&& page) {
 void World::solve_workshop(Real dt) {
   for_each_plain_contact([&](const Contact& contact, RigidBody& a, RigidBody& b, Real penetration, TeachingImpulse& total) {
     if (penetration < 0) return;  // the listing only sees intersecting pairs
-    const ListingOptions options{mix_restitution(bodies_[contact.body_a].material.restitution, bodies_[contact.body_b].material.restitution),
-                                 settings_.contact.friction, settings_.printed_eq8_sign};
+    const ListingOptions options{contact_material(contact.body_a, contact.body_b).restitution, settings_.contact.friction,
+                                 settings_.printed_eq8_sign};
     const ListingImpulse applied = add_collision_impulse(a, b, contact.point, contact.normal, penetration, options);
     total.normal += applied.normal;
     if (applied.tangent_direction.isZero(0)) return;
@@ -114,8 +114,7 @@ void World::solve_projection(Real dt) {
 void World::solve_penalty(Real h) {
   for (int i = 0; i < substeps_; ++i) {
     for_each_plain_contact([&](const Contact& contact, RigidBody& a, RigidBody& b, Real penetration, TeachingImpulse& total) {
-      const Real friction =
-          settings_.contact.friction ? mix_friction(bodies_[contact.body_a].material.friction, bodies_[contact.body_b].material.friction) : 0;
+      const Real friction = contact_material(contact.body_a, contact.body_b).friction;
       const PenaltyImpulse applied = apply_penalty_impulse(a, b, contact.point, contact.normal, penetration, friction, settings_.penalty, h);
       total.normal += applied.normal;
       total.tangent1 += applied.tangent1;

@@ -53,6 +53,7 @@ bool find_hit(const ContactConstraint& c, const BodyState& sa, const BodyInertia
   const Real vn_mid = relative_velocity(sa, sb, hit.ra, hit.rb).dot(c.normal);
   hit.gap = std::max(separation, Real(0));
   const Real v_touch = touch_velocity(vn_mid, hit.gap, a, h);
+  if (v_touch >= 0) return false;  // closing at the anchors, but not where the hit acts: no meeting
   const Real v_start = vn_mid - a * h / 2;
   hit.tau = hit.gap > 0 ? 2 * hit.gap / -(v_start + v_touch) : 0;
   hit.u = -c.restitution * v_touch;
@@ -65,7 +66,7 @@ bool find_hit(const ContactConstraint& c, const BodyState& sa, const BodyInertia
 
 bool bounce(ManifoldConstraint& m, const ContactConstraint* points, BodyState& sa, const BodyInertia& ia, BodyState& sb,
             const BodyInertia& ib, Real restitution_threshold, Real h, BounceImpulses& applied) {
-  if (m.bounced || m.restitution == 0) return false;
+  if (m.restitution == 0) return false;
   // Cheap first: is any point closing fast enough to bounce at all?
   bool closing = false;
   for (int i = 0; i < m.count && !closing; ++i) {
@@ -120,10 +121,11 @@ bool bounce(ManifoldConstraint& m, const ContactConstraint* points, BodyState& s
   // exact motion does, u (h - tau) + a (h - tau)^2 / 2 apart: take the difference back afterwards,
   // for the point that met first.
   const Hit* earliest = std::min_element(hits, hits + hit_count, [](const Hit& x, const Hit& y) { return x.tau < y.tau; });
+  // A pair hit again within the sub-step (the impact passes, soft_step.h) keeps the shift of its
+  // first meeting: its positions, and so its gap, are still those of the sub-step's start.
   const Real a = points[earliest->index].normal_acceleration, after = h - earliest->tau;
-  m.bounce_shift = (earliest->u * after + a * after * after / 2) - (earliest->gap + earliest->target * h);
+  if (m.bounce_shift == 0) m.bounce_shift = (earliest->u * after + a * after * after / 2) - (earliest->gap + earliest->target * h);
   m.bounce_speed = earliest->u;
-  m.bounced = true;
   return true;
 }
 

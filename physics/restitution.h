@@ -9,7 +9,21 @@
 #include "physics/body_state.h"
 #include "physics/contact_constraint.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace impulse::physics {
+
+// How fast a pair must close to bounce. The threshold is for contacts that gravity loads: a box or
+// a ball resting on the floor closes a little every sub-step, and bouncing that would make it
+// jiggle. A contact gravity does not press together (two billiard balls on the cloth, any pair in
+// zero gravity) has no such closing: it bounces at any speed above kImpactFloor of the threshold,
+// so that in a rack of balls the slow hits that follow the break obey eq. 5 too. Between the two,
+// the threshold in proportion to how much the normal faces gravity (|n . g| / |g|).
+constexpr Real kImpactFloor = Real(0.02);
+inline Real impact_threshold(Real restitution_threshold, const Vec3& gravity_direction, const Vec3& normal) {
+  return restitution_threshold * std::max(kImpactFloor, std::abs(normal.dot(gravity_direction)));
+}
 
 // What a bounce applied, for the step's totals: the normal impulse at each point that hit, and
 // friction's on the manifold's tangents.

@@ -30,8 +30,9 @@ class SoftStep {
                IntegratePosition&& integrate_position);
 
  private:
-  // Per thread that sweeps (two at most): the last sub-step epoch in which one of its manifolds
+  // Per thread that sweeps (two at most): the last sweep's epoch in which one of its manifolds
   // bounced. On the heap, as the sweeps' progress counters: atomics cannot move with the world.
+  static constexpr int kImpactPasses = 32;
   struct alignas(64) BounceEpoch {
     std::atomic<uint64_t> value{0};
   };
@@ -43,7 +44,7 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
                        IntegrateVelocity&& integrate_velocity, IntegratePosition&& integrate_position) {
   SweepSchedule& schedule = contacts.schedule();
   ThreadTeam& team = contacts.team();
-  const uint64_t epoch = schedule.new_epochs(4);
+  const uint64_t epoch = schedule.new_epochs(4 + kImpactPasses);
   const bool parallel = schedule.parallel();
   auto meet = [&] { if (parallel) team.barrier(); };
   // The joints are solved by the first thread alone, between the contacts' sweeps.
@@ -51,6 +52,12 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
     if (!joints) return;
     if (thread == 0) stage();
     meet();
+  };
+  // Whether a thread bounced something in the sweep of `sweep_epoch` (read after a barrier: every
+  // thread reads the same and takes the same way).
+  auto bounced_in = [&](uint64_t sweep_epoch) {
+    return bounced_[0].value.load(std::memory_order_relaxed) == sweep_epoch ||
+           bounced_[1].value.load(std::memory_order_relaxed) == sweep_epoch;
   };
   schedule.run(team, [&](int thread) {
     schedule.slot_share(thread, integrate_velocity);
@@ -61,13 +68,27 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
     joint_stage(thread, [&] { joints->solve(bodies, 1 / h, true); });
     bool bounced = false;
     schedule.sweep_share(thread, epoch + 1, [&](int place, int width) { bounced |= contacts.solve_manifolds(place, width, bodies, 1 / h, true); });
-    if (bounced) bounced_[thread].value.store(epoch, std::memory_order_relaxed);  // only threads 0 and 1 have manifolds
+    if (bounced) bounced_[thread].value.store(epoch + 1, std::memory_order_relaxed);  // only threads 0 and 1 have manifolds
     meet();
+    // The impacts pass on: a bounce sets bodies moving into their neighbours within the same
+    // sub-step, which the sweep above may have visited before it. Pass after pass of bounces
+    // alone, until one bounces nothing: every pair that closes is answered by eq. 5 in the order
+    // the hits reach it (sequential impulses; Guendelman, Bridson and Fedkiw 2003), never by the
+    // relax pass's inelastic rows. Each pass keeps momentum, angular momentum, and with e = 1 the
+    // energy; passes beyond kImpactPasses are left to the rows.
+    bool any_bounced = bounced_in(epoch + 1);
+    for (uint64_t pass = epoch + 4, last = epoch + 1; bounced_in(last) && pass < epoch + 4 + kImpactPasses; last = pass++) {
+      bounced = false;
+      schedule.sweep_share(thread, pass, [&](int place, int width) { bounced |= contacts.bounce_manifolds(place, width, bodies, h); });
+      if (bounced) bounced_[thread].value.store(pass, std::memory_order_relaxed);
+      meet();
+      any_bounced = true;
+    }
     schedule.slot_share(thread, integrate_position);
     meet();
     // Most sub-steps nothing bounces (resting piles): then no sweep to take shifts back. The
     // barriers order the flags; every thread reads the same and takes the same way.
-    if (bounced_[0].value.load(std::memory_order_relaxed) == epoch || bounced_[1].value.load(std::memory_order_relaxed) == epoch) {
+    if (any_bounced) {
       schedule.sweep_share(thread, epoch + 2, [&](int place, int width) { contacts.take_back_bounce_shifts(place, width, bodies.states); });
       meet();
     }

@@ -34,7 +34,7 @@ void World::step() {
   const Real h = dt / substeps_;
 
   find_contacts();
-  contact_solver_.plan(contacts_, bodies_, *team_);
+  contact_solver_.plan(contacts_, bodies_, settings_.pair_materials, *team_);
   load_states();
   if (settings_.method == ResponseMethod::impulse)
     contact_solver_.prepare(contacts_, bodies_, solver_bodies_, settings_.contact, settings_.gravity, h);
@@ -50,6 +50,12 @@ void World::step() {
   time_ += dt;
   ++step_count_;
   check_finite();
+}
+
+ContactMaterial World::contact_material(int body_a, int body_b) const {
+  ContactMaterial material = physics::contact_material(bodies_.at(body_a).material, bodies_.at(body_b).material, settings_.pair_materials);
+  if (!settings_.contact.friction) material.friction = 0;
+  return material;
 }
 
 const StepRecord& World::record() const {

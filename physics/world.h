@@ -5,6 +5,7 @@
 #include "physics/contact.h"
 #include "physics/contact_finder.h"
 #include "physics/island.h"
+#include "physics/materials.h"
 #include "physics/joint_solver.h"
 #include "physics/contact_solver.h"
 #include "physics/response_method.h"
@@ -35,6 +36,7 @@ struct WorldSettings {
   bool printed_eq8_sign = false;   // workshop method only: eq. 8/13's numerator as printed, -(1 - e),
                                    // the erratum, run to show what goes wrong (ERRATA.md)
   ContactSolverSettings contact;
+  std::vector<PairMaterial> pair_materials;  // a scene's own friction and restitution for pairs of kinds (materials.h)
   PenaltySettings penalty;
   SleepSettings sleep;
   Real joint_hertz = 60;           // stiffness of the joints' position correction
@@ -67,6 +69,9 @@ class World {
   const std::vector<Body>& bodies() const { return bodies_; }
   Body& body(int index) { return bodies_.at(index); }
   const WorldSettings& settings() const { return settings_; }
+  // The friction and restitution of contacts between two bodies (materials.h; friction 0 when the
+  // world's friction is off).
+  ContactMaterial contact_material(int body_a, int body_b) const;
   Real time() const { return time_; }
   int substeps() const { return substeps_; }  // in the last step (between min_substeps and substeps)
   int64_t step_count() const { return step_count_; }

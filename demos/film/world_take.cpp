@@ -121,9 +121,9 @@ void WorldTake::note_impact(const std::vector<Motion>& before) {
   impact.angular = ((a.inverse_inertia * impact.offset_a.cross(n)).cross(impact.offset_a) +
                     (b.inverse_inertia * impact.offset_b.cross(n)).cross(impact.offset_b))
                        .dot(n);
-  const double ea = impact.body_a >= 0 ? bodies[impact.body_a].material.restitution : 0;
-  const double eb = impact.body_b >= 0 ? bodies[impact.body_b].material.restitution : 0;
-  impact.restitution = std::max(ea, eb);  // the pair's, as the solver mixes it
+  // The pair's e, as the solver takes it (its own, or the two bodies' mixed: physics/materials.h).
+  if (impact.body_a >= 0 && impact.body_b >= 0) impact.restitution = world_.contact_material(impact.body_a, impact.body_b).restitution;
+  else impact.restitution = bodies[std::max(impact.body_a, impact.body_b)].material.restitution;
   impact.inverse_mass_a = impact.body_a >= 0 ? bodies[impact.body_a].inv_mass : 0;
   impact.inverse_mass_b = impact.body_b >= 0 ? bodies[impact.body_b].inv_mass : 0;
   impact.impulse = strongest->normal_impulse;

@@ -3,6 +3,7 @@
 #include "demos/scene/scene_overrides.h"
 #include "demos/scene/scene_sections.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
@@ -54,6 +55,7 @@ void read_body(const toml::table& table, const std::string& path, int index, Sce
   def.density = r.number("density", def.density, 0, kLargestMass, true);
   def.material.restitution = r.number("restitution", def.material.restitution, 0, 1);
   def.material.friction = r.number("friction", def.material.friction, 0);
+  read_material_kind(r, scene, def);
   def.position = r.vec3("position", def.position, kFarthest, "m", kFarthestWhy);
   def.orientation = rotation_from_degrees(r.vec3("rotation", Vec3::Zero()));
   def.velocity = r.vec3("velocity", def.velocity, kFastest, "m/s", kFastestWhy);
@@ -102,6 +104,47 @@ void read_world(TableReader& top, Scene& scene) {
   w.penalty.hertz = r.number("penalty_hertz", w.penalty.hertz, 0, 10000, true);
   w.penalty.damping_ratio = r.number("penalty_damping_ratio", w.penalty.damping_ratio, 0);
   r.finish();
+}
+
+void read_material_kind(TableReader& r, Scene& scene, physics::BodyDef& def) {
+  if (!r.has("material")) return;
+  const std::string name = r.string("material", "");
+  if (name.empty()) r.fail(r.get("material"), "material", "a material needs a name, like \"ball\" or \"cloth\"");
+  auto known = std::find(scene.material_names.begin(), scene.material_names.end(), name);
+  def.material.kind = int(known - scene.material_names.begin());
+  if (known == scene.material_names.end()) scene.material_names.push_back(name);
+}
+
+// [[material_pair]]: friction and restitution for contacts between bodies of two materials (or of
+// one, named twice), in place of the mixing rules (physics/materials.h).
+void read_material_pairs(TableReader& top, Scene& scene) {
+  const toml::array* pairs = top.table_list("material_pair");
+  if (!pairs) return;
+  for (size_t i = 0; i < pairs->size(); ++i) {
+    TableReader r(*pairs->get(i)->as_table(), scene.path, "[[material_pair]] " + std::to_string(i + 1));
+    const toml::node* between = r.get("between");
+    const toml::array* names = between ? between->as_array() : nullptr;
+    const char* form = "two materials, like between = [\"ball\", \"cloth\"] (a body says material = \"ball\")";
+    if (!names || names->size() != 2 || !names->get(0)->is_string() || !names->get(1)->is_string()) r.fail(between, "between", form);
+    physics::PairMaterial pair;
+    int* kinds[2] = {&pair.kind_a, &pair.kind_b};
+    for (int k = 0; k < 2; ++k) {
+      const std::string name = names->get(k)->as_string()->get();
+      auto known = std::find(scene.material_names.begin(), scene.material_names.end(), name);
+      if (known == scene.material_names.end()) {
+        const std::string hint = did_you_mean(name, scene.material_names);
+        r.fail(between, "between",
+               "no body has material = \"" + name + "\"" + (hint.empty() ? "" : "; " + hint) +
+                   (scene.material_names.empty() ? " (no body names a material yet: add material = \"" + name + "\" to its [[body]])" : ""));
+      }
+      *kinds[k] = int(known - scene.material_names.begin());
+    }
+    if (r.has("friction")) pair.friction = r.number("friction", 0, 0);
+    if (r.has("restitution")) pair.restitution = r.number("restitution", 0, 0, 1);
+    if (!pair.friction && !pair.restitution) r.fail(between, "between", "give the pair a friction, a restitution or both");
+    r.finish();
+    scene.world.pair_materials.push_back(pair);
+  }
 }
 
 void read_bodies(TableReader& top, Scene& scene) {

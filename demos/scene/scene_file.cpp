@@ -65,6 +65,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& settin
   read_world(top, scene);
   read_bodies(top, scene);
   read_patterns(top, scene);
+  read_material_pairs(top, scene);
   read_joints(top, scene);
   read_view(top, scene);  // after the bodies, whose names it checks
   read_equations(top, scene);  // after [playback]

@@ -57,6 +57,7 @@ struct Scene {
   std::vector<physics::BodyDef> bodies;
   std::vector<Colour> colours;  // one per body
   std::vector<physics::JointDef> joints;  // body indices into `bodies`
+  std::vector<std::string> material_names;  // the bodies' `material`s; a body's Material::kind indexes it
   CameraSetting camera;
   CameraMotion camera_motion;
   VideoSetting video;

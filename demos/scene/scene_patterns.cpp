@@ -14,12 +14,13 @@ namespace {
 using physics::Real;
 using physics::Vec3;
 
-physics::BodyDef base_body(TableReader& r, const std::string& name) {
+physics::BodyDef base_body(TableReader& r, Scene& scene, const std::string& name) {
   physics::BodyDef def;
   def.name = name;
   def.mass = r.number("mass", 1, 0, kLargestMass, true);
   def.material.restitution = r.number("restitution", 0, 0, 1);
   def.material.friction = r.number("friction", 0.6, 0);
+  read_material_kind(r, scene, def);
   return def;
 }
 
@@ -28,7 +29,7 @@ void read_pyramid(TableReader& r, Scene& scene) {
   const int base = r.integer("base", 10, 1, 200);
   const Real size = r.number("size", 1, 0, 100, true);
   const Vec3 origin = r.vec3("position", Vec3::Zero(), kFarthest, "m", kFarthestWhy);  // the middle of the base row's bottom
-  physics::BodyDef def = base_body(r, "");
+  physics::BodyDef def = base_body(r, scene, "");
   r.finish();
   def.shape = physics::Shape::box(Vec3::Constant(size / 2));
   for (const physics::PyramidBox& box : physics::pyramid_boxes(base, size, origin)) {
@@ -51,7 +52,7 @@ void read_lattice(TableReader& r, Scene& scene) {
   const bool tumble = r.boolean("random_orientation", false);
   const bool stagger = r.boolean("stagger", false);          // odd layers shifted by half a pitch
   const int seed = r.integer("seed", 1, 0, 1 << 30);
-  physics::BodyDef def = base_body(r, "");
+  physics::BodyDef def = base_body(r, scene, "");
   r.finish();
   def.shape = shape == "box" ? physics::Shape::box(Vec3::Constant(size / 2)) : physics::Shape::sphere(size / 2);
   std::mt19937 random(seed);

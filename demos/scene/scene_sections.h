@@ -31,6 +31,9 @@ void read_world(TableReader& top, Scene& scene);   // [world]
 void read_bodies(TableReader& top, Scene& scene);  // [[body]]
 void read_patterns(TableReader& top, Scene& scene);  // [[pyramid]], [[lattice]]: many bodies at once
 void read_joints(TableReader& top, Scene& scene);  // [[joint]], after the bodies they name
+void read_material_pairs(TableReader& top, Scene& scene);  // [[material_pair]], after the bodies
+// A body's `material = "NAME"`, if it has one: its kind (physics/materials.h), a new one for a new name.
+void read_material_kind(TableReader& r, Scene& scene, physics::BodyDef& def);
 void read_view(TableReader& top, Scene& scene);
 void read_compare(TableReader& top, Scene& scene);  // [compare], before the checks that name a pane
 void read_checks(TableReader& top, Scene& scene);  // [[check]], after the bodies they name    // [camera], [video], [draw], [overlay], [[caption]], [playback]
