@@ -32,7 +32,7 @@ int render_in_jobs(const std::vector<fs::path>& scenes, std::vector<size_t> chos
   // work from its length, bodies and panes (its own and rendered alone).
   std::vector<double> work(scenes.size(), 0.0);
   for (size_t i : chosen) try {
-      const demos::Scene scene = demos::load_scene(scenes[i].string(), overrides.settings);
+      const demos::Scene scene = demos::load_scene(scenes[i].string(), overrides.scene_arguments.settings);
       work[i] = scene.duration * (1 + scene.bodies.size() / 100.0) * std::max<size_t>(1, 2 * scene.compare.values.size());
     } catch (const std::exception&) {
       // its job reports what is wrong with it
@@ -91,10 +91,10 @@ int render_in_turn(const std::vector<fs::path>& scenes, const std::vector<size_t
 
 }  // namespace
 
-std::vector<std::string> job_arguments(int argc, char** argv) {
+std::vector<std::string> job_arguments(const std::vector<std::string>& arguments) {
   std::vector<std::string> kept{"--quiet"};
-  for (int i = 1; i < argc; ++i) {
-    const std::string word = argv[i];
+  for (size_t i = 0; i < arguments.size(); ++i) {
+    const std::string& word = arguments[i];
     if (word == "--jobs" || word == "--shard") {
       ++i;
       continue;

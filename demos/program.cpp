@@ -22,18 +22,18 @@ Comparison load_comparison(const std::vector<std::string>& scene_paths, const st
   std::vector<std::string> labels;
   if (scene_paths.size() == 1) {
     const std::string& path = scene_paths.front();
-    const demos::CompareSpec compare = vary.empty() ? load(path, overrides.settings).compare : demos::compare_from_vary(vary);
+    const demos::CompareSpec compare = vary.empty() ? load(path, overrides.scene_arguments).compare : demos::compare_from_vary(vary);
     if (compare.values.empty())
       throw std::invalid_argument(path + ": nothing to compare: give --vary KEY=V1,V2, a [compare] table in the scene, "
                                   "or two to four scene files");
-    comparison.scenes = demos::load_variants(path, overrides.settings, compare);
+    comparison.scenes = demos::load_variants(path, overrides.scene_arguments.settings, compare);
     labels = compare.labels;
     comparison.paths.assign(compare.values.size(), path);
   } else if (!vary.empty() || scene_paths.size() > 4) {
     throw std::invalid_argument("compare shows two to four panes: give two to four scene files, or one and --vary KEY=V1,V2");
   } else {
     for (const std::string& path : scene_paths) {
-      comparison.scenes.push_back(load(path, overrides.settings));
+      comparison.scenes.push_back(load(path, overrides.scene_arguments));
       labels.push_back(fs::path(path).stem().string());
     }
     comparison.paths = scene_paths;
@@ -56,7 +56,7 @@ Comparison load_comparison(const std::vector<std::string>& scene_paths, const st
 }
 
 Comparison load_panes(const std::string& scene_path, const VideoOverrides& overrides, demos::RenderOptions& options) {
-  demos::Scene scene = load(scene_path, overrides.settings);
+  demos::Scene scene = load(scene_path, overrides.scene_arguments);
   if (!scene.compare.values.empty()) return load_comparison({scene_path}, "", overrides, options);
   Comparison alone;
   overrides.apply(scene, options);
@@ -66,8 +66,8 @@ Comparison load_panes(const std::string& scene_path, const VideoOverrides& overr
   return alone;
 }
 
-demos::Scene load(const std::string& scene_path, const std::vector<std::string>& settings, bool typeset) {
-  demos::Scene scene = demos::load_scene(scene_path, settings);
+demos::Scene load(const std::string& scene_path, const SceneArguments& arguments, bool typeset) {
+  demos::Scene scene = demos::load_scene(scene_path, arguments.settings);
   if (typeset) demos::check_equations(scene);
   for (const std::string& warning : demos::start_warnings(scene)) std::fprintf(stderr, "impulse: %s\n", warning.c_str());
   return scene;
@@ -112,7 +112,7 @@ std::string default_video_path(const std::string& scene_path, const std::string&
 
 int render_one(const std::string& scene_path, demos::RenderOptions options, const VideoOverrides& overrides,
                bool progress) {
-  demos::Scene scene = load(scene_path, overrides.settings);
+  demos::Scene scene = load(scene_path, overrides.scene_arguments);
   if (!scene.compare.values.empty()) return render_comparison({scene_path}, "", options, overrides, progress);
   overrides.apply(scene, options);
   demos::ProgressBar bar(progress, scene_path);
@@ -152,9 +152,9 @@ int render_comparison(const std::vector<std::string>& scene_paths, const std::st
 
 void render_panes_alone(const std::string& scene_path, const std::string& video_path, const VideoOverrides& overrides,
                         bool progress) {
-  const demos::CompareSpec compare = demos::load_scene(scene_path, overrides.settings).compare;
+  const demos::CompareSpec compare = demos::load_scene(scene_path, overrides.scene_arguments.settings).compare;
   if (compare.values.empty()) return;
-  std::vector<demos::Scene> panes = demos::load_variants(scene_path, overrides.settings, compare);
+  std::vector<demos::Scene> panes = demos::load_variants(scene_path, overrides.scene_arguments.settings, compare);
   for (size_t i = 0; i < panes.size(); ++i) {
     demos::RenderOptions options;
     options.video_path = demos::pane_video_path(video_path, int(i) + 1);

@@ -23,9 +23,14 @@ inline constexpr int kExitFailure = 4;   // anything else went wrong (the render
 // What an exit code means, in words: "the output cannot be written", "interrupted by signal 15".
 std::string exit_meaning(int exit_code);
 
-// What the command line changes in every scene it reads.
-struct VideoOverrides {
+// What the command line says about every scene a command reads (command_options.h adds the options).
+struct SceneArguments {
   std::vector<std::string> settings;  // --set KEY=VALUE, over the scene file
+};
+
+// What the command line changes in every scene a rendering command reads.
+struct VideoOverrides {
+  SceneArguments scene_arguments;
   std::string quality;  // empty: the scene's
   std::optional<int> width, height, fps, crf;
   std::string x264_preset;  // empty: the scene's
@@ -68,10 +73,10 @@ Comparison load_comparison(const std::vector<std::string>& scene_paths, const st
 // One scene file as it renders: its [compare]'s panes, or itself alone in one pane.
 Comparison load_panes(const std::string& scene_path, const VideoOverrides& overrides, demos::RenderOptions& options);
 
-// The scene with the --set settings over it; what is odd but allowed is said on stderr.
+// The scene with the command line's arguments over it; what is odd but allowed is said on stderr.
 // With `typeset`, its [[equation]]s' TeX is typeset too (check_equations): a LaTeX error is the
 // scene's, with its file and line.
-Scene load(const std::string& scene_path, const std::vector<std::string>& settings, bool typeset = true);
+Scene load(const std::string& scene_path, const SceneArguments& arguments, bool typeset = true);
 
 // Prints each [[check]]'s result on stderr; the exit code: 0, or kExitCheckFailed if one failed.
 int report_checks(const std::string& scene_path, const std::vector<CheckResult>& results);
