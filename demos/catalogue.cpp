@@ -78,8 +78,9 @@ int render_in_turn(const std::vector<fs::path>& scenes, const std::vector<size_t
     if (choice.only.empty()) std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, scenes.size(), scene.c_str());
     int code = 0;
     try {
-      code = render_one(scene.string(), options, overrides, progress);
-      render_panes_alone(scene.string(), options.video_path, overrides, progress);
+      const Comparison loaded = load_panes(scene.string(), overrides, options);  // the file parsed once
+      code = render_loaded(loaded, options, progress);
+      render_panes_alone(loaded, options.video_path, overrides, progress);
     } catch (const std::exception& error) {
       code = report(error);
     }

@@ -27,7 +27,7 @@ int simulate(const SimulateArguments& arguments) {
   const TraceOptions& trace = arguments.trace;
   if (trace.bodies_path.empty() && trace.contacts_path.empty() && trace.world_path.empty())
     throw std::invalid_argument("simulate writes CSV: give --trace, --contacts or --world (or several)");
-  Scene scene = load(arguments.scene_path, arguments.scene, false);  // numbers only: no TeX needed
+  Scene scene = load(SceneFile(arguments.scene_path), arguments.scene, false);  // numbers only: no TeX needed
   // The file's own values, not a pane of its [compare]: the checks about a pane do not apply.
   std::erase_if(scene.checks, [](const CheckSpec& spec) { return spec.pane != 0; });
   std::vector<CheckResult> checks;
@@ -38,8 +38,10 @@ int simulate(const SimulateArguments& arguments) {
 
 int check(const CheckArguments& arguments) {
   const std::string& path = arguments.scene_path;
-  const Scene scene = load(path, arguments.scene);
-  if (!scene.compare.values.empty()) load_variants(path, arguments.scene.settings, scene.compare);  // each pane's values
+  const SceneFile file(path);
+  const Scene scene = load(file, arguments.scene);
+  std::vector<Scene> panes;  // each pane's values, checked as the file's are
+  if (!scene.compare.values.empty()) panes = load_variants(file, arguments.scene.settings, scene.compare);
   std::printf("%s: fine, %zu bodies, %.1f s, %zu checks\n", path.c_str(), scene.bodies.size(), scene.duration,
               scene.checks.size());
   if (!arguments.simulate) return 0;
@@ -49,7 +51,6 @@ int check(const CheckArguments& arguments) {
     return report_checks(path, checks);
   }
   int exit_code = 0;  // each pane of the comparison, with its checks
-  const std::vector<Scene> panes = load_variants(path, arguments.scene.settings, scene.compare);
   for (size_t i = 0; i < panes.size(); ++i) {
     std::vector<CheckResult> checks;
     simulate_scene(panes[i], TraceOptions{}, &checks);

@@ -23,8 +23,9 @@ namespace fs = std::filesystem;
 // What loading `path` says: the error, or else the first warning, or else "fine".
 std::string verdict(const std::string& path) {
   try {
-    const demos::Scene scene = demos::load_scene(path);
-    if (!scene.compare.values.empty()) demos::load_variants(path, {}, scene.compare);  // each pane's value
+    const demos::SceneFile file(path);
+    const demos::Scene scene = file.scene();
+    if (!scene.compare.values.empty()) demos::load_variants(file, {}, scene.compare);  // each pane's value
     const std::vector<std::string> warnings = demos::start_warnings(scene);
     return warnings.empty() ? "fine" : warnings.front();
   } catch (const demos::SceneError& error) {

@@ -5,7 +5,7 @@
 #include "demos/film/marks.h"
 #include "demos/film/plot_recorder.h"
 #include "demos/film/scene_draw_list.h"
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "demos/film/world_take.h"
 #include "render/camera_view.h"
 #include "render/overlay.h"

@@ -4,7 +4,7 @@
 // encoder run on a worker thread, a few frames behind (render/frame_pipeline.h).
 #pragma once
 #include "demos/film/film.h"
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "physics/world.h"
 #include "render/draw_list.h"
 #include "render/renderer.h"

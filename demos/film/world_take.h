@@ -6,7 +6,7 @@
 #include "demos/film/contact_hold.h"
 #include "demos/film/plot_recorder.h"
 #include "demos/film/scene_draw_list.h"
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "demos/film/take_summary.h"
 #include "physics/world.h"
 
