@@ -28,7 +28,7 @@ export TSAN_OPTIONS="suppressions=$san/tsan.supp:print_suppressions=0:second_dea
 
 # The tests ThreadSanitizer runs (ctest -R): two threads in the solver's team (the determinism
 # test's two-thread run, the 1000-box heap, the 210-box pyramid) and whole scenes rendered with
-# the simulation thread, the drawing thread and the encoder's worker (film_tests, program_tests).
+# the picturing thread, the drawing thread and the encoder's worker (film_tests, program_tests).
 tsan_targets=(physics_tests physics_box_tests film_tests program_tests impulse)
 tsan_tests='^(Determinism\.|Heap\.Thousand|Stack\.PyramidOf21Boxes|Video\.|RenderVideo\.|Playback\.|Set\.|Simulate\.|Compare\.)'
 
