@@ -38,21 +38,31 @@ void read_shard(const std::string& shard, CatalogueChoice& choice) {
     throw std::invalid_argument("--shard wants K/N with 1 <= K <= N (like 2/4), got '" + shard + "'");
 }
 
-void add_catalogue(Commands& commands) {
+const std::string kCatalogueFooter = examples_footer(
+    "  impulse catalogue -o out\n"
+    "  impulse catalogue --scenes my_course/ -o videos/ --quality low\n"
+    "  impulse catalogue --shard 2/4 -o out     # the second of four CI jobs\n"
+    "  impulse catalogue --changed-only -o out  # only scenes edited since their video\n"
+    "  impulse catalogue --jobs 2 -o out        # two scenes at once\n");
+
+const std::string kGalleryFooter =
+    "\nThe catalogue writes it too, after its videos. It works opened from disk and served by any\n"
+    "static server.\n" +
+    examples_footer("  impulse gallery -o out && xdg-open out/index.html\n"
+                    "  impulse gallery --scenes my_course/ -o videos/ && python3 -m http.server -d videos\n");
+
+}  // namespace
+
+void add_catalogue_command(Commands& commands) {
   auto arguments = std::make_shared<CatalogueArguments>();
-  CLI::App* catalogue =
-      commands.add("catalogue", "Render every scene of a directory into videos", [arguments](const Invocation& run) {
+  CLI::App* catalogue = commands.add(
+      "catalogue", "Render every scene of a directory into videos", kCatalogueFooter, [arguments](const Invocation& run) {
         CatalogueChoice choice = arguments->choice;
         if (!arguments->shard.empty()) read_shard(arguments->shard, choice);
         choice.child_arguments = job_arguments(run.arguments);
         return render_catalogue(arguments->scenes_directory, arguments->out_directory, run.progress, arguments->overrides,
                                 choice);
       });
-  catalogue->footer(examples_footer("  impulse catalogue -o out\n"
-                                    "  impulse catalogue --scenes my_course/ -o videos/ --quality low\n"
-                                    "  impulse catalogue --shard 2/4 -o out     # the second of four CI jobs\n"
-                                    "  impulse catalogue --changed-only -o out  # only scenes edited since their video\n"
-                                    "  impulse catalogue --jobs 2 -o out        # two scenes at once\n"));
   catalogue->add_option("--scenes", arguments->scenes_directory, "Directory of scene files")->capture_default_str();
   catalogue->add_option("-o,--output", arguments->out_directory, "Directory for the videos")->capture_default_str();
   catalogue
@@ -66,10 +76,11 @@ void add_catalogue(Commands& commands) {
   add_video_options(catalogue, arguments->overrides);
 }
 
-void add_gallery(Commands& commands) {
+void add_gallery_command(Commands& commands) {
   auto arguments = std::make_shared<GalleryArguments>();
   CLI::App* gallery = commands.add(
-      "gallery", "Write OUT/index.html: every video of the catalogue, for students", [arguments](const Invocation&) {
+      "gallery", "Write OUT/index.html: every video of the catalogue, for students", kGalleryFooter,
+      [arguments](const Invocation&) {
         const std::string& out = arguments->out_directory;
         if (!std::filesystem::is_directory(out))
           throw std::invalid_argument("no video directory '" + out + "' (render the catalogue first)");
@@ -77,21 +88,10 @@ void add_gallery(Commands& commands) {
         std::fprintf(stderr, "wrote %s/index.html (%d videos)\n", out.c_str(), videos);
         return 0;
       });
-  gallery->footer(std::string("\nThe catalogue writes it too, after its videos. It works opened from disk and served by any\n"
-                              "static server.\n") +
-                  examples_footer("  impulse gallery -o out && xdg-open out/index.html\n"
-                                  "  impulse gallery --scenes my_course/ -o videos/ && python3 -m http.server -d videos\n"));
   gallery->add_option("--scenes", arguments->scenes_directory, "Directory of the scene files the videos were made from")
       ->capture_default_str();
   gallery->add_option("-o,--output", arguments->out_directory, "Directory of the videos; index.html goes there")
       ->capture_default_str();
-}
-
-}  // namespace
-
-void add_catalogue_commands(Commands& commands) {
-  add_catalogue(commands);
-  add_gallery(commands);
 }
 
 }  // namespace impulse::demos

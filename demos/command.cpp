@@ -4,8 +4,10 @@
 
 namespace impulse::demos {
 
-CLI::App* Commands::add(const std::string& name, const std::string& description, CommandRun run) {
+CLI::App* Commands::add(const std::string& name, const std::string& description, const std::string& footer,
+                        CommandRun run) {
   CLI::App* command = app_.add_subcommand(name, description);
+  command->footer(footer);
   commands_.emplace_back(command, std::move(run));
   return command;
 }

@@ -1,7 +1,8 @@
-// The commands of the `impulse` program. Each group of commands is a file of its own
-// (render_commands.cpp, catalogue_commands.cpp, simulate_commands.cpp, verify_command.cpp) with one
-// function that adds its subcommands, their options and what they run; run_program.cpp calls each
-// once. A new command is a new file, its add_ function declared below and called there.
+// The commands of the `impulse` program. Each command has a function that adds its subcommand,
+// its options and what it runs, declared below and defined in the file of its group
+// (render_commands.cpp, catalogue_commands.cpp, simulate_commands.cpp, verify_command.cpp);
+// run_program.cpp calls each once. A new command is a new file, its add_ function declared below
+// and called there.
 #pragma once
 #include <CLI/CLI.hpp>
 
@@ -26,9 +27,9 @@ class Commands {
  public:
   explicit Commands(CLI::App& app) : app_(app) {}
 
-  // A subcommand. Its options go to the returned CLI::App, bound to storage that `run` holds
-  // (a shared_ptr it captures), so that they live as long as the command.
-  CLI::App* add(const std::string& name, const std::string& description, CommandRun run);
+  // A subcommand, its --help ending with `footer`. Its options go to the returned CLI::App, bound
+  // to storage that `run` holds (a shared_ptr it captures), so that they live as long as the command.
+  CLI::App* add(const std::string& name, const std::string& description, const std::string& footer, CommandRun run);
 
   // Runs the subcommand the parsed command line chose; its exit code.
   int run(const Invocation& invocation) const;
@@ -38,10 +39,13 @@ class Commands {
   std::vector<std::pair<CLI::App*, CommandRun>> commands_;
 };
 
-// The command groups, each in its file.
-void add_render_commands(Commands& commands);     // render, compare
-void add_catalogue_commands(Commands& commands);  // catalogue, gallery
-void add_simulate_commands(Commands& commands);   // simulate, check
-void add_verify_command(Commands& commands);      // verify
+// The commands, by the file that defines them.
+void add_render_command(Commands& commands);     // render_commands.cpp
+void add_compare_command(Commands& commands);
+void add_catalogue_command(Commands& commands);  // catalogue_commands.cpp
+void add_gallery_command(Commands& commands);
+void add_simulate_command(Commands& commands);   // simulate_commands.cpp
+void add_check_command(Commands& commands);
+void add_verify_command(Commands& commands);     // verify_command.cpp
 
 }  // namespace impulse::demos

@@ -26,9 +26,12 @@ int run_program(int argc, char** argv) {
   app.add_flag("--progress", force_progress, "A progress bar even when stderr is not a terminal (e.g. in a log)");
 
   Commands commands(app);
-  add_render_commands(commands);
-  add_catalogue_commands(commands);
-  add_simulate_commands(commands);
+  add_render_command(commands);
+  add_compare_command(commands);
+  add_catalogue_command(commands);
+  add_gallery_command(commands);
+  add_simulate_command(commands);
+  add_check_command(commands);
   add_verify_command(commands);
 
   try {

@@ -59,14 +59,22 @@ int check(const CheckArguments& arguments) {
   return exit_code;
 }
 
-void add_simulate(Commands& commands) {
+const std::string kSimulateFooter = examples_footer(
+    "  impulse simulate assets/scenes/bounce.toml --trace bodies.csv\n"
+    "  impulse simulate scene.toml --duration 2 --every 6 --contacts contacts.csv --world world.csv\n"
+    "  impulse simulate scene.toml --set world.friction=false --trace no_friction.csv\n");
+
+const std::string kCheckFooter = examples_footer(
+    "  impulse check assets/scenes/bounce.toml\n"
+    "  impulse check scene.toml --set body[ball].restitution=1.2   # refused: e in [0, 1]\n"
+    "  impulse check --simulate assets/scenes/bounce.toml          # its [[check]]s, measured\n");
+
+}  // namespace
+
+void add_simulate_command(Commands& commands) {
   auto arguments = std::make_shared<SimulateArguments>();
   CLI::App* command = commands.add("simulate", "Simulate a scene and write its numbers as CSV, without pictures",
-                                   [arguments](const Invocation&) { return simulate(*arguments); });
-  command->footer(examples_footer(
-      "  impulse simulate assets/scenes/bounce.toml --trace bodies.csv\n"
-      "  impulse simulate scene.toml --duration 2 --every 6 --contacts contacts.csv --world world.csv\n"
-      "  impulse simulate scene.toml --set world.friction=false --trace no_friction.csv\n"));
+                                   kSimulateFooter, [arguments](const Invocation&) { return simulate(*arguments); });
   TraceOptions& trace = arguments->trace;
   command->add_option("scene", arguments->scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
   command->add_option("--duration", trace.duration, "Seconds of simulated time (default: the scene's)")
@@ -79,24 +87,13 @@ void add_simulate(Commands& commands) {
   add_scene_options(command, arguments->scene);
 }
 
-void add_check(Commands& commands) {
+void add_check_command(Commands& commands) {
   auto arguments = std::make_shared<CheckArguments>();
-  CLI::App* command = commands.add("check", "Read a scene file and report any error in it, without rendering",
+  CLI::App* command = commands.add("check", "Read a scene file and report any error in it, without rendering", kCheckFooter,
                                    [arguments](const Invocation&) { return check(*arguments); });
-  command->footer(examples_footer(
-      "  impulse check assets/scenes/bounce.toml\n"
-      "  impulse check scene.toml --set body[ball].restitution=1.2   # refused: e in [0, 1]\n"
-      "  impulse check --simulate assets/scenes/bounce.toml          # its [[check]]s, measured\n"));
   command->add_option("scene", arguments->scene_path, "Scene file (.toml)")->required();
   command->add_flag("--simulate", arguments->simulate, "Also simulate the scene and report each of its [[check]]s");
   add_scene_options(command, arguments->scene);
-}
-
-}  // namespace
-
-void add_simulate_commands(Commands& commands) {
-  add_simulate(commands);
-  add_check(commands);
 }
 
 }  // namespace impulse::demos

@@ -69,9 +69,8 @@ int verify(VerifyArguments arguments) {
 void add_verify_command(Commands& commands) {
   auto arguments = std::make_shared<VerifyArguments>();
   CLI::App* command = commands.add(
-      "verify", "Render stills at chosen moments and compare them, and every body's pose, with goldens",
+      "verify", "Render stills at chosen moments and compare them, and every body's pose, with goldens", verify_help(),
       [arguments](const Invocation&) { return verify(*arguments); });
-  command->footer(verify_help());
   command->add_option("scene", arguments->scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
   command->add_option("--golden", arguments->verify.golden_directory,
                       "Directory of the goldens: t_0.500.png ..., manifest.toml, poses.csv")

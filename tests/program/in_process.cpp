@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -57,11 +58,10 @@ class Captured {
 }  // namespace
 
 ProgramRun run_in_process(const std::vector<std::string>& arguments) {
-  std::vector<std::string> words{"impulse"};
-  words.insert(words.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (std::string& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
+  std::vector<std::string> words = arguments;
+  words.insert(words.begin(), "impulse");  // argv[0], the program's name
+  std::vector<char*> argv(words.size() + 1, nullptr);
+  std::transform(words.begin(), words.end(), argv.begin(), [](std::string& word) { return word.data(); });
   Captured out(stdout, STDOUT_FILENO);
   Captured err(stderr, STDERR_FILENO);
   ProgramRun run;
