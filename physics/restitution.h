@@ -19,8 +19,7 @@ namespace impulse::physics {
 // and rock at a few cm/s while they settle, and bouncing that would keep them jiggling. Those
 // speeds come from gravity, so the threshold is in proportion to it: `restitution_threshold` at
 // 9.81 m/s² (the default gravity), a sixth of it on the Moon, and in zero gravity (a rack of balls,
-// bodies in space) kImpactFloor of it, so that the slow hits after a break obey eq. 5 too. (In
-// proportion to |n . g| instead, a heap's leaning boxes bounced off each other for a minute.)
+// bodies in space) kImpactFloor of it, so that the slow hits after a break obey eq. 5 too.
 constexpr Real kImpactFloor = Real(0.02);
 constexpr Real kThresholdGravity = Real(9.81);  // m/s^2, the default [world] gravity's
 inline Real impact_threshold(Real restitution_threshold, const Vec3& gravity) {

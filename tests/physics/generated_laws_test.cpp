@@ -1,4 +1,4 @@
-// The laws over generated scenes, not only the scenes we thought of (issue 26, part 4).
+// The laws over generated scenes, not only the scenes we thought of.
 //
 // Each case is a scene file written by a seeded generator, loaded as a lecturer's would be
 // (load_scene, build_world) and stepped; each law is checked at every step. A case that breaks its
