@@ -88,6 +88,13 @@ void World::for_each_plain_contact(Page&& page) {
 void World::solve_workshop(Real dt) {
   for_each_plain_contact([&](const Contact& contact, RigidBody& a, RigidBody& b, Real penetration, TeachingImpulse& total) {
     if (penetration < 0) return;  // the listing only sees intersecting pairs
+    if (response_) {              // a student's own AddCollisionImpulse (outside_response.h)
+      const TeachingImpulse applied = respond_outside(contact, a, b, penetration);
+      total.normal += applied.normal;
+      total.tangent1 += applied.tangent1;
+      total.tangent2 += applied.tangent2;
+      return;
+    }
     const ListingOptions options{contact_material(contact.body_a, contact.body_b).restitution, settings_.contact.friction,
                                  settings_.printed_eq8_sign};
     const ListingImpulse applied = add_collision_impulse(a, b, contact.point, contact.normal, penetration, options);
