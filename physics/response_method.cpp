@@ -5,6 +5,7 @@
 // normal and the penetration now.
 #include "physics/response_method.h"
 
+#include "physics/listing_reference.h"
 #include "physics/normal_impulse.h"
 #include "physics/penalty_method.h"
 #include "physics/projection_method.h"
@@ -95,9 +96,12 @@ void World::solve_workshop(Real dt) {
       total.tangent2 += applied.tangent2;
       return;
     }
-    const ListingOptions options{contact_material(contact.body_a, contact.body_b).restitution, settings_.contact.friction,
-                                 settings_.printed_eq8_sign};
-    const ListingImpulse applied = add_collision_impulse(a, b, contact.point, contact.normal, penetration, options);
+    const ContactMaterial material = contact_material(contact.body_a, contact.body_b);
+    const ListingOptions options{material.restitution, settings_.contact.friction, settings_.printed_eq8_sign};
+    const ListingImpulse applied =
+        settings_.reference_listing
+            ? reference_collision_impulse(a, b, contact.point, contact.normal, penetration, {material.restitution, material.friction, dt})
+            : add_collision_impulse(a, b, contact.point, contact.normal, penetration, options);
     total.normal += applied.normal;
     if (applied.tangent_direction.isZero(0)) return;
     Vec3 t1, t2;

@@ -36,6 +36,8 @@ struct WorldSettings {
   ResponseMethod method = ResponseMethod::impulse;
   bool printed_eq8_sign = false;   // workshop method only: eq. 8/13's numerator as printed, -(1 - e),
                                    // the erratum, run to show what goes wrong (ERRATA.md)
+  bool reference_listing = false;  // workshop method only: listing 1 corrected (listing_reference.h), the
+                                   // answer a student's response is graded beside
   OutsideResponseMaker response;   // workshop method only: a student's AddCollisionImpulse in place of
                                    // listing 1's page (outside_response.h); empty: the page
   ContactSolverSettings contact;

@@ -20,7 +20,15 @@ void read_response(TableReader& r, Scene& scene) {
   if (!r.has("response")) return;
   const toml::node* node = r.get("response");
   const std::string value = r.string("response", "reference");
-  if (value == "reference") return;
+  if (value == "reference") {  // the engine's own answer: listing 1 corrected (physics/listing_reference.h)
+    if (r.has("method") && scene.world.method != physics::ResponseMethod::workshop)
+      r.fail(node, "response", "\"reference\" is listing 1 corrected, the workshop method's page: set method = \"workshop\", or leave it out");
+    if (scene.world.printed_eq8_sign)
+      r.fail(node, "response", "\"reference\" is listing 1 corrected, with eq. 8's 1 + e: leave eq8_sign out");
+    scene.world.method = physics::ResponseMethod::workshop;
+    scene.world.reference_listing = true;
+    return;
+  }
   if (value.empty()) r.fail(node, "response", "give a C++ file defining AddCollisionImpulse, or \"reference\" for the engine's own");
   if (r.has("method") && scene.world.method != physics::ResponseMethod::workshop)
     r.fail(node, "response",

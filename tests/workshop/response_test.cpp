@@ -2,12 +2,14 @@
 // run in a child process, and giving what the engine's own listing page gives.
 #include "demos/workshop/response_build.h"
 #include "demos/workshop/response_child.h"
+#include "physics/listing_reference.h"
 #include "physics/world.h"
 #include "tests/workshop/workshop_test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <random>
 
 namespace impulse::workshop {
 namespace {
@@ -81,6 +83,33 @@ TEST(ChildResponse, ListingOneRunsAsTheEnginesListingPage) {
     EXPECT_NEAR(reference.record().contacts[i].normal_impulse, student.record().contacts[i].normal_impulse, 1e-4);
     EXPECT_LT((reference.record().contacts[i].tangent_impulse - student.record().contacts[i].tangent_impulse).norm(), 1e-4);
   }
+}
+
+// The corrected listing (the pair's e above 0.5 m/s, Baumgarte's bias, Coulomb's clamp) is the
+// engine's reference page, listing_reference.h: the answer a student's file is graded beside. Call
+// for call, on 2000 seeded contacts between random bodies (one of them still, now and then), the
+// file's velocities are the page's, but for the listing's floats.
+TEST(ChildResponse, CorrectedListingIsTheEnginesReferenceCallForCall) {
+  ChildResponse student(build_response(test::listing("listing1_corrected.cpp")).shared_object, "listing1_corrected.cpp");
+  std::mt19937 random(27);
+  int pushed = 0, clamped = 0;
+  for (int call = 0; call < 2000; ++call) {
+    physics::PlainBody a = test::random_body(random, false), b = test::random_body(random, call % 5 == 0);
+    const physics::PlainContact contact = test::random_contact(random, a, b);
+    physics::RigidBody ra = test::view(a), rb = test::view(b);
+    const physics::ListingImpulse expected = physics::reference_collision_impulse(
+        ra, rb, test::vec(contact.point), test::vec(contact.normal), contact.penetration, {a.restitution, a.friction, contact.time_step});
+    student.respond(a, b, contact);
+    pushed += expected.normal > 0;
+    clamped += expected.normal > 0 && std::abs(std::abs(expected.tangent) - a.friction * expected.normal) < 1e-9;
+    const double scale = 1 + ra.lin_velocity.norm() + rb.lin_velocity.norm() + ra.ang_velocity.norm() + rb.ang_velocity.norm();
+    for (auto [plain, view] : {std::pair<const physics::PlainBody*, const physics::RigidBody*>{&a, &ra}, {&b, &rb}}) {
+      ASSERT_LT((test::vec(plain->lin_velocity) - view->lin_velocity).norm(), 1e-5 * scale) << "call " << call;
+      ASSERT_LT((test::vec(plain->ang_velocity) - view->ang_velocity).norm(), 1e-5 * scale) << "call " << call;
+    }
+  }
+  EXPECT_GT(pushed, 500);   // the calls pushed, and
+  EXPECT_GT(clamped, 100);  // friction's clamp held, often enough to tell
 }
 
 }  // namespace
