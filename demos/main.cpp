@@ -6,6 +6,7 @@
 #include "demos/program.h"
 #include "demos/simulate.h"
 #include "demos/verify.h"
+#include "demos/workshop/workshop_commands.h"
 #include "render/image_compare.h"
 
 #include <CLI/CLI.hpp>
@@ -163,6 +164,7 @@ int main(int argc, char** argv) {
                      "With --png: stills at these moments of simulated time, in seconds (t_0.500.png, ...), "
                      "e.g. 0.5,1,2; the video's frames are then not written as PNG unless --frames says so");
   add_video_options(render, render_overrides);
+  workshop::add_response_options(render, render_overrides.settings);
 
   auto* compare = app.add_subcommand("compare", "Two to four settings or scenes side by side in one video, one pane each");
   compare->footer(std::string("\nThe panes share the first scene's camera, video, playback and duration, and the same simulated\n"
@@ -186,6 +188,7 @@ int main(int argc, char** argv) {
   compare->add_option("--frames", compare_frame_list, "With --png: only these frames, numbered from 0, e.g. 0,45,90");
   compare->add_option("--at", compare_moment_list, "With --png: stills at these moments in seconds (t_0.500.png, ...)");
   add_video_options(compare, compare_overrides);
+  workshop::add_response_options(compare, compare_overrides.settings);
 
   auto* catalogue = app.add_subcommand("catalogue", "Render every scene of a directory into videos");
   catalogue->footer(std::string("\nExamples:\n"
@@ -237,6 +240,7 @@ int main(int argc, char** argv) {
                        "CSV: a row per contact per step (bodies, point, normal, penetration, impulses)");
   simulate->add_option("--world", trace.world_path, "CSV: a row per step (energies, linear and angular momentum)");
   add_set_option(simulate, simulate_settings);
+  workshop::add_response_options(simulate, simulate_settings);
 
   auto* verify = app.add_subcommand("verify", "Render stills at chosen moments and compare them, and every body's pose, with goldens");
   verify->footer(verify_help());
@@ -265,6 +269,8 @@ int main(int argc, char** argv) {
   check->add_flag("--simulate", check_simulate, "Also simulate the scene and report each of its [[check]]s");
   add_set_option(check, check_settings);
 
+  workshop::WorkshopCommands workshop_commands(app);  // response, grade
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -273,6 +279,7 @@ int main(int argc, char** argv) {
   demos::install_interrupt_handlers();
   const bool progress = !quiet && (force_progress || isatty(STDERR_FILENO));
   try {
+    if (workshop_commands.chosen()) return workshop_commands.run(progress);
     if (*render) {
       demos::RenderOptions options = output_options(video_path, default_video_path(scene_path, "out"), png_directory, frame_list,
                                                            moment_list);

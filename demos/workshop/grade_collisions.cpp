@@ -173,8 +173,9 @@ GradeCaseSpec off_centre() {
     const Vec3 p0 = momentum(run, hit.before), p1 = momentum(run, hit.after);
     const double spin = box1.angular_velocity.z();
     const double l_scale = ball0.mass * ball0.velocity.norm() * (ball0.position - hit.point).norm() + 1e-9;
-    verdict.expected = format("box spins at %.3f rad/s; part at %.2f m/s; L about the hit %.3f kg m^2/s", spin_expected, e * closing, l0.z());
-    verdict.measured = format("box spins at %.3f rad/s; part at %.2f m/s; L about the hit %.3f kg m^2/s", spin, parting, l1.z());
+    verdict.expected = format("box spins at %.3f rad/s; part at %.2f m/s; angular momentum about the hit kept", spin_expected, e * closing);
+    verdict.measured = format("box spins at %.3f rad/s; part at %.2f m/s; angular momentum about the hit changed by %.4f kg m^2/s",
+                              spin, parting, (l1 - l0).norm());
     const bool momentum_kept = (p1 - p0).norm() <= kMomentumShare * ball0.mass * ball0.velocity.norm();
     const bool angular_kept = (l1 - l0).norm() <= kMomentumShare * 10 * l_scale;
     const bool spins = std::abs(spin - spin_expected) <= 0.03 * std::abs(spin_expected);
