@@ -153,6 +153,12 @@ CaseResult grade_case(const std::string& name, const physics::OutsideResponseMak
     result.measured = "the response failed";
     result.hint = failure_hint(result.failure);
     return result;
+  } catch (const std::runtime_error& error) {  // what it did broke the world (a body's state no longer finite)
+    result.failure = error.what();
+    result.measured = "the world failed";
+    result.hint = "the velocities it left grew without bound: an impulse with the wrong sign pushes bodies together harder "
+                  "every step (a contact must push them apart: + J n on c0, - J n on c1)";
+    return result;
   }
   const Verdict verdict = spec.judge(run);
   result.expected = verdict.expected;
