@@ -8,7 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <filesystem>
 #include <fstream>
+#include <thread>
+#include <vector>
 #include <random>
 
 namespace impulse::workshop {
@@ -50,6 +54,22 @@ TEST(ResponseBuild, TheSameFileIsBuiltOnce) {
   const BuiltResponse second = build_response(path);
   EXPECT_FALSE(second.compiled);
   EXPECT_EQ(first.shared_object, second.shared_object);
+}
+
+// Four builds of one new file at once (four impulses started by a course's make -j) all succeed,
+// with one shared object: each compiles into a temporary of its own and renames it into place.
+TEST(ResponseBuild, ConcurrentBuildsOfOneFileAllSucceed) {
+  const std::string text = test::read(test::listing("listing1_corrected.cpp")) + "// built four times at once, " +
+                           std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()) + "\n";
+  const std::string path = test::scratch_file("concurrent.cpp", text);
+  std::vector<std::string> built(4);
+  std::vector<std::thread> builders;
+  for (size_t i = 0; i < built.size(); ++i) builders.emplace_back([&, i] { built[i] = build_response(path).shared_object; });
+  for (std::thread& builder : builders) builder.join();
+  for (const std::string& so : built) EXPECT_EQ(so, built.front());
+  EXPECT_TRUE(std::filesystem::is_regular_file(built.front()));
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(built.front()).parent_path()))
+    EXPECT_FALSE(entry.path().string().starts_with(built.front() + ".")) << "a temporary left: " << entry.path();
 }
 
 // Listing 1 with its two parentheses fixed is the engine's own listing page (workshop_listing.cpp)
