@@ -36,9 +36,11 @@ void read_response(TableReader& r, Scene& scene) {
   if (scene.world.printed_eq8_sign)
     r.fail(node, "response", "eq8_sign = \"printed\" is listing 1's own page's: a response has its own sign (leave eq8_sign out)");
   // From the file: beside the scene. From the command line (its node has no source in the file):
-  // where the user is.
+  // where the user is, or else beside the scene (a [compare] table's values come as --set does).
   const bool from_file = node->source().path && *node->source().path == scene.path;
-  const fs::path path = from_file && fs::path(value).is_relative() ? fs::path(scene.path).parent_path() / value : fs::path(value);
+  const fs::path beside = fs::path(scene.path).parent_path() / value;
+  const bool relative = fs::path(value).is_relative();
+  const fs::path path = relative && (from_file || (!fs::exists(value) && fs::exists(beside))) ? beside : fs::path(value);
   try {
     const workshop::BuiltResponse built = workshop::build_response(path.string());
     scene.world.response = workshop::child_response_maker(built.shared_object, path.string(), time_limit);

@@ -120,7 +120,8 @@ TEST(WorkshopCli, GradeJsonForMachines) {
 // response fails (e = 0 where e = 0.7 is asked), the two panes differ at the end.
 TEST(WorkshopCli, GradeVideoShowsAFailedCaseBesideTheReference) {
   const fs::path dir = work_directory();
-  const auto result = impulse({"grade", test::listing("listing1.cpp"), "--only", "head_on_equal_e0.7", "--video", (dir / "videos").string()});
+  const auto result = impulse({"grade", test::listing("listing1.cpp"), "--only", "head_on_equal_e0.7", "--video", (dir / "videos").string()},
+                              dir / "table.txt");
   EXPECT_EQ(result.exit_code, 2) << result.describe();
   const ::impulse::testing::DecodedVideo video = ::impulse::testing::decode_video((dir / "videos" / "head_on_equal_e0.7.mp4").string());
   EXPECT_EQ(video.width, 854);
@@ -128,7 +129,7 @@ TEST(WorkshopCli, GradeVideoShowsAFailedCaseBesideTheReference) {
   ASSERT_GE(video.frames.size(), 10u);
   EXPECT_LT(pane_difference(video.frames.front()), 1.5);  // the same start
   EXPECT_GT(pane_difference(video.frames.back()), 5.0);   // and not the same end
-  const auto passing = impulse({"grade", test::listing("listing1_corrected.cpp"), "--video", (dir / "none").string()});
+  const auto passing = impulse({"grade", test::listing("listing1_corrected.cpp"), "--video", (dir / "none").string()}, dir / "passing.txt");
   EXPECT_EQ(passing.exit_code, 0) << passing.describe();
   EXPECT_TRUE(!fs::exists(dir / "none") || fs::is_empty(dir / "none"));
 }
@@ -168,6 +169,10 @@ TEST(WorkshopCli, ASceneNamesItsResponseBesideItself) {
   const fs::path scene = drop_scene(dir, "response = \"mine.cpp\"\n");
   const auto run = impulse({"simulate", scene.string(), "--world", (dir / "w.csv").string()});
   EXPECT_TRUE(run.succeeded()) << run.describe();
+  // A [compare] table's values too: the file's listing beside the reference.
+  std::ofstream(drop_scene(dir), std::ios::app) << "[compare]\nvary = \"world.response\"\nvalues = [\"mine.cpp\", \"reference\"]\n";
+  const auto compared = impulse({"check", "--simulate", (dir / "drop.toml").string()});
+  EXPECT_TRUE(compared.succeeded()) << compared.describe();
   const fs::path missing = drop_scene(dir, "response = \"theirs.cpp\"\n");
   const auto refused = impulse({"check", missing.string()});
   EXPECT_EQ(refused.exit_code, 1) << refused.describe();
