@@ -63,6 +63,9 @@ struct alignas(64) ManifoldConstraint {
   Real total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
   Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
   Real bounce_speed = 0;               // m/s, the speed the pair parts at after its hit
+  // Whether each body's turning carries its contact points with it: not a sphere's (its surface
+  // meets the other body where it is, however fast it spins) nor a still body's.
+  bool turns_a = true, turns_b = true;
 };
 
 // A manifold's load at the end of a step, for StackSink: its last sub-step's impulse and the sum of

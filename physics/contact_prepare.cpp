@@ -261,8 +261,10 @@ void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& bl
   }
   block.twist_radius[l] = twist_radius;
   // A sphere's surface stays where it is as it turns, and a still body does not turn.
-  block.turns_a[l] = sa.inv_mass > 0 && body_a.shape.type != ShapeType::sphere;
-  block.turns_b[l] = sb.inv_mass > 0 && body_b.shape.type != ShapeType::sphere;
+  m.turns_a = sa.inv_mass > 0 && body_a.shape.type != ShapeType::sphere;
+  m.turns_b = sb.inv_mass > 0 && body_b.shape.type != ShapeType::sphere;
+  block.turns_a[l] = m.turns_a;
+  block.turns_b[l] = m.turns_b;
 }
 
 // Last step's friction impulses, on this step's tangents.

@@ -33,14 +33,19 @@ struct Hit {
 };
 
 // The point's hit, or false when it does not meet fast enough within the sub-step.
-bool find_hit(const ContactConstraint& c, const BodyState& sa, const BodyInertia& ia, const BodyState& sb, const BodyInertia& ib,
-              Real restitution_threshold, Real h, Hit& hit) {
-  const Real separation = separation_now(c.normal, c.anchor_a, c.anchor_b, c.adjusted_separation, sa, sb);
+bool find_hit(const ContactConstraint& c, const ManifoldConstraint& m, const BodyState& sa, const BodyInertia& ia,
+              const BodyState& sb, const BodyInertia& ib, Real restitution_threshold, Real h, Hit& hit) {
+  // Where the anchors are now. A sphere's contact point does not turn with it: a billiard ball
+  // spinning at 100 rad/s would otherwise carry its anchor a radian round in a step, off the line
+  // of centres, and the hit would spin both balls and miss its timing.
+  const Vec3 anchor_a = m.turns_a ? rotate(sa.dq, c.anchor_a) : c.anchor_a;
+  const Vec3 anchor_b = m.turns_b ? rotate(sb.dq, c.anchor_b) : c.anchor_b;
+  const Real separation = (sa.dp - sb.dp + anchor_a - anchor_b).dot(c.normal) + c.adjusted_separation;
   const Real vn = relative_velocity(sa, sb, c.anchor_a, c.anchor_b).dot(c.normal);
   if (vn > -restitution_threshold || separation + vn * h > 0) return false;
   // The hit acts at one world point for both bodies, midway between where their anchors are
   // now, so that it conserves angular momentum exactly (r_a - r_b = x_b - x_a).
-  const Vec3 mean_motion = ((sa.dp + rotate(sa.dq, c.anchor_a)) + (sb.dp + rotate(sb.dq, c.anchor_b))) / 2;
+  const Vec3 mean_motion = ((sa.dp + anchor_a) + (sb.dp + anchor_b)) / 2;
   const Vec3 half_span = (c.anchor_a - c.anchor_b) / 2;
   hit.ra = mean_motion - sa.dp + half_span;
   hit.rb = mean_motion - sb.dp - half_span;
@@ -78,7 +83,7 @@ bool bounce(ManifoldConstraint& m, const ContactConstraint* points, BodyState& s
   Hit hits[kMaxManifoldPoints];
   int hit_count = 0;
   for (int i = 0; i < m.count; ++i)
-    if (find_hit(points[i], sa, ia, sb, ib, restitution_threshold, h, hits[hit_count])) hits[hit_count++].index = i;
+    if (find_hit(points[i], m, sa, ia, sb, ib, restitution_threshold, h, hits[hit_count])) hits[hit_count++].index = i;
   if (hit_count == 0) return false;
 
   // The points of one face land together: iterate them to agreement (eq. 13 with 1 + e, each

@@ -87,5 +87,40 @@ TEST(HeadOn, ConservesMomentumAndSeparatesAtRestitutionTimesApproach) {
   EXPECT_LT(la.velocity.x(), 0);  // the light one bounces back
 }
 
+// A billiard ball that has slid along the cloth spins (up to rolling, v / R = 200 rad/s here), and
+// a frictionless hit acts along the line of centres whatever the spin: the cue ball stops, the
+// struck ball leaves at its speed (e = 1, equal masses), and neither spin changes. The hit's
+// anchors do not turn with a sphere: turned with the cue ball (3 rad in a step), they gave both
+// balls 100 rad/s of spin, and with 24 sub-steps a plastic hit.
+TEST(HeadOn, ASpinningBallHitsAlongTheLineOfCentres) {
+  for (int substeps : {4, 12, 24})
+    for (Real spin : {0.0, -27.0, -200.0}) {
+      WorldSettings settings;
+      settings.substeps = settings.min_substeps = substeps;
+      World world(settings);
+      add_ground(world, 0);
+      world.body(0).material.friction = 0;
+      const Real radius = 0.028575;
+      BodyDef cue;
+      cue.shape = Shape::sphere(radius);
+      cue.mass = 0.17;
+      cue.material = {1, 0};
+      cue.position = Vec3(-0.3, radius, 0);
+      cue.velocity = Vec3(5.7, 0, 0);
+      cue.angular_velocity = Vec3(0, 0, spin);
+      world.add_body(cue);
+      BodyDef red = cue;
+      red.position = Vec3(0, radius, 0);
+      red.velocity = red.angular_velocity = Vec3::Zero();
+      world.add_body(red);
+      for (int step = 0; step < 8; ++step) world.step();
+      SCOPED_TRACE(::testing::Message() << substeps << " sub-steps, spin " << spin);
+      EXPECT_NEAR(world.bodies()[1].velocity.x(), 0, 1e-3);
+      EXPECT_NEAR(world.bodies()[2].velocity.x(), 5.7, 1e-3);
+      EXPECT_NEAR(world.bodies()[1].angular_velocity.z(), spin, 1e-6);
+      EXPECT_NEAR(world.bodies()[2].angular_velocity.norm(), 0, 1e-6);
+    }
+}
+
 }  // namespace
 }  // namespace impulse::physics

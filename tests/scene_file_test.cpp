@@ -1,6 +1,7 @@
 // Scene files: good ones load, bad ones are refused with file, line, field and reason.
 #include "demos/scene/rotation_degrees.h"
 #include "demos/scene/scene_file.h"
+#include "demos/scene/scene_world.h"
 
 #include <gtest/gtest.h>
 
@@ -182,6 +183,57 @@ TEST(SceneFile, ASetValueFollowedByAnythingIsRefused) {
   }
   EXPECT_EQ(scene_of(ball, {"body[ball].mass=1.5"}).bodies[0].mass, 1.5);
   EXPECT_EQ(scene_of(ball, {"body[ball].name=big ball"}).bodies[0].name, "big ball");  // a bare word
+}
+
+
+// [[material_pair]]: the pair's own friction and restitution reach the world's contacts; a value
+// the pair leaves out, and any other pair, are mixed (the larger e, the geometric mean of mu).
+TEST(SceneFile, MaterialPairsGiveTheirPairsTheirOwnFrictionAndRestitution) {
+  const std::string path = write_scene("material_pairs", R"(
+[[body]]
+name = "cue"
+shape = "sphere"
+material = "ball"
+friction = 0.05
+restitution = 0.9
+[[body]]
+name = "red"
+shape = "sphere"
+position = [2, 0, 0]
+material = "ball"
+friction = 0.05
+restitution = 0.9
+[[body]]
+name = "table"
+shape = "plane"
+material = "cloth"
+friction = 0.8
+restitution = 0.1
+[[body]]
+name = "wall"
+shape = "plane"
+normal = [1, 0, 0]
+offset = -5
+friction = 0.2
+[[material_pair]]
+between = ["cloth", "ball"]
+friction = 0.2
+[[material_pair]]
+between = ["ball", "ball"]
+restitution = 0.95
+)");
+  const Scene scene = load_scene(path);
+  ASSERT_EQ(scene.material_names, (std::vector<std::string>{"ball", "cloth"}));
+  const physics::World world = build_world(scene);
+  const physics::ContactMaterial on_cloth = world.contact_material(0, 2);
+  EXPECT_DOUBLE_EQ(on_cloth.friction, 0.2);      // the pair's, in either order
+  EXPECT_DOUBLE_EQ(on_cloth.restitution, 0.9);   // left out: the larger of 0.9 and 0.1
+  const physics::ContactMaterial on_ball = world.contact_material(1, 0);
+  EXPECT_DOUBLE_EQ(on_ball.restitution, 0.95);
+  EXPECT_DOUBLE_EQ(on_ball.friction, 0.05);      // sqrt(0.05 * 0.05)
+  const physics::ContactMaterial on_wall = world.contact_material(0, 3);
+  EXPECT_NEAR(on_wall.friction, std::sqrt(0.05 * 0.2), 1e-15);  // no pair: mixed
+  EXPECT_DOUBLE_EQ(on_wall.restitution, 0.9);
 }
 
 }  // namespace
