@@ -32,7 +32,7 @@ int render_in_jobs(const std::vector<fs::path>& scenes, std::vector<size_t> chos
   // work from its length, bodies and panes (its own and rendered alone).
   std::vector<double> work(scenes.size(), 0.0);
   for (size_t i : chosen) try {
-      const demos::Scene scene = demos::load_scene(scenes[i].string(), overrides.settings);
+      const demos::Scene scene = demos::load_scene(scenes[i].string(), overrides.scene_arguments.settings);
       work[i] = scene.duration * (1 + scene.bodies.size() / 100.0) * std::max<size_t>(1, 2 * scene.compare.values.size());
     } catch (const std::exception&) {
       // its job reports what is wrong with it
@@ -78,8 +78,9 @@ int render_in_turn(const std::vector<fs::path>& scenes, const std::vector<size_t
     if (choice.only.empty()) std::fprintf(stderr, "[%zu/%zu] %s\n", i + 1, scenes.size(), scene.c_str());
     int code = 0;
     try {
-      code = render_one(scene.string(), options, overrides, progress);
-      render_panes_alone(scene.string(), options.video_path, overrides, progress);
+      const Comparison loaded = load_panes(scene.string(), overrides, options);  // the file parsed once
+      code = render_loaded(loaded, options, progress);
+      render_panes_alone(loaded, options.video_path, overrides, progress);
     } catch (const std::exception& error) {
       code = report(error);
     }
@@ -91,10 +92,10 @@ int render_in_turn(const std::vector<fs::path>& scenes, const std::vector<size_t
 
 }  // namespace
 
-std::vector<std::string> job_arguments(int argc, char** argv) {
+std::vector<std::string> job_arguments(const std::vector<std::string>& arguments) {
   std::vector<std::string> kept{"--quiet"};
-  for (int i = 1; i < argc; ++i) {
-    const std::string word = argv[i];
+  for (size_t i = 0; i < arguments.size(); ++i) {
+    const std::string& word = arguments[i];
     if (word == "--jobs" || word == "--shard") {
       ++i;
       continue;

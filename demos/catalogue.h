@@ -21,7 +21,7 @@ struct CatalogueChoice {
 
 // The command line for a job of --jobs: the same options, less those that chose the scenes (this
 // process chose) and the progress bar (one a child would interleave with the others').
-std::vector<std::string> job_arguments(int argc, char** argv);
+std::vector<std::string> job_arguments(const std::vector<std::string>& arguments);  // without the program's name
 
 // Renders the chosen scenes of `scenes_directory` into `out_directory` and writes its gallery
 // (not as one job of --jobs); the worst exit code.

@@ -16,28 +16,20 @@ namespace fs = std::filesystem;
 
 namespace impulse::demos {
 
-Comparison load_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
-                           const VideoOverrides& overrides, demos::RenderOptions& options) {
+namespace {
+
+// The panes of `compare`, read from the one parse of `file`.
+Comparison panes_of(const SceneFile& file, const CompareSpec& compare, const VideoOverrides& overrides) {
   Comparison comparison;
-  std::vector<std::string> labels;
-  if (scene_paths.size() == 1) {
-    const std::string& path = scene_paths.front();
-    const demos::CompareSpec compare = vary.empty() ? load(path, overrides.settings).compare : demos::compare_from_vary(vary);
-    if (compare.values.empty())
-      throw std::invalid_argument(path + ": nothing to compare: give --vary KEY=V1,V2, a [compare] table in the scene, "
-                                  "or two to four scene files");
-    comparison.scenes = demos::load_variants(path, overrides.settings, compare);
-    labels = compare.labels;
-    comparison.paths.assign(compare.values.size(), path);
-  } else if (!vary.empty() || scene_paths.size() > 4) {
-    throw std::invalid_argument("compare shows two to four panes: give two to four scene files, or one and --vary KEY=V1,V2");
-  } else {
-    for (const std::string& path : scene_paths) {
-      comparison.scenes.push_back(load(path, overrides.settings));
-      labels.push_back(fs::path(path).stem().string());
-    }
-    comparison.paths = scene_paths;
-  }
+  comparison.scenes = demos::load_variants(file, overrides.scene_arguments.settings, compare);
+  comparison.paths.assign(compare.values.size(), file.path());
+  for (size_t i = 0; i < comparison.scenes.size(); ++i) comparison.panes.push_back({nullptr, compare.labels[i]});
+  return comparison;
+}
+
+// Every pane the first's camera, video, playback and duration; the first the command line's
+// video options.
+void share_first(Comparison& comparison, const VideoOverrides& overrides, demos::RenderOptions& options) {
   for (size_t i = 0; i < comparison.scenes.size(); ++i) {
     demos::Scene& scene = comparison.scenes[i];
     if (i == 0) {
@@ -50,24 +42,53 @@ Comparison load_comparison(const std::vector<std::string>& scene_paths, const st
       scene.playback = first.playback;
       scene.duration = first.duration;
     }
-    comparison.panes.push_back({&scene, labels[i]});
+    comparison.panes[i].scene = &scene;
   }
+}
+
+}  // namespace
+
+Comparison load_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
+                           const VideoOverrides& overrides, demos::RenderOptions& options) {
+  Comparison comparison;
+  if (scene_paths.size() == 1) {
+    const SceneFile file(scene_paths.front());
+    const demos::CompareSpec compare =
+        vary.empty() ? load(file, overrides.scene_arguments).compare : demos::compare_from_vary(vary);
+    if (compare.values.empty())
+      throw std::invalid_argument(file.path() + ": nothing to compare: give --vary KEY=V1,V2, a [compare] table in the "
+                                  "scene, or two to four scene files");
+    comparison = panes_of(file, compare, overrides);
+  } else if (!vary.empty() || scene_paths.size() > 4) {
+    throw std::invalid_argument("compare shows two to four panes: give two to four scene files, or one and --vary KEY=V1,V2");
+  } else {
+    for (const std::string& path : scene_paths) {
+      comparison.scenes.push_back(load(SceneFile(path), overrides.scene_arguments));
+      comparison.panes.push_back({nullptr, fs::path(path).stem().string()});
+    }
+    comparison.paths = scene_paths;
+  }
+  share_first(comparison, overrides, options);
   return comparison;
 }
 
 Comparison load_panes(const std::string& scene_path, const VideoOverrides& overrides, demos::RenderOptions& options) {
-  demos::Scene scene = load(scene_path, overrides.settings);
-  if (!scene.compare.values.empty()) return load_comparison({scene_path}, "", overrides, options);
-  Comparison alone;
-  overrides.apply(scene, options);
-  alone.scenes.push_back(std::move(scene));
-  alone.paths = {scene_path};
-  alone.panes = {{&alone.scenes.front(), ""}};
-  return alone;
+  const SceneFile file(scene_path);
+  demos::Scene scene = load(file, overrides.scene_arguments);
+  Comparison loaded;
+  if (!scene.compare.values.empty()) {
+    loaded = panes_of(file, scene.compare, overrides);
+  } else {
+    loaded.scenes.push_back(std::move(scene));
+    loaded.paths = {scene_path};
+    loaded.panes = {{nullptr, ""}};
+  }
+  share_first(loaded, overrides, options);
+  return loaded;
 }
 
-demos::Scene load(const std::string& scene_path, const std::vector<std::string>& settings, bool typeset) {
-  demos::Scene scene = demos::load_scene(scene_path, settings);
+demos::Scene load(const SceneFile& file, const SceneArguments& arguments, bool typeset) {
+  demos::Scene scene = file.scene(arguments.settings);
   if (typeset) demos::check_equations(scene);
   for (const std::string& warning : demos::start_warnings(scene)) std::fprintf(stderr, "impulse: %s\n", warning.c_str());
   return scene;
@@ -110,20 +131,6 @@ std::string default_video_path(const std::string& scene_path, const std::string&
 }
 
 
-int render_one(const std::string& scene_path, demos::RenderOptions options, const VideoOverrides& overrides,
-               bool progress) {
-  demos::Scene scene = load(scene_path, overrides.settings);
-  if (!scene.compare.values.empty()) return render_comparison({scene_path}, "", options, overrides, progress);
-  overrides.apply(scene, options);
-  demos::ProgressBar bar(progress, scene_path);
-  options.progress = [&bar](int done, int total) { bar.update(done, total); };
-  const std::vector<demos::CheckResult> checks = demos::render_scene(scene, options);
-  bar.finish();
-  if (!options.video_path.empty()) std::fprintf(stderr, "wrote %s\n", options.video_path.c_str());
-  if (!options.png_directory.empty()) std::fprintf(stderr, "wrote frames to %s/\n", options.png_directory.c_str());
-  return report_checks(scene_path, checks);
-}
-
 std::string default_comparison_path(const std::vector<std::string>& scene_paths, const std::string& vary) {
   std::string name = fs::path(scene_paths.front()).stem().string();
   if (!vary.empty()) {
@@ -136,32 +143,48 @@ std::string default_comparison_path(const std::vector<std::string>& scene_paths,
   return (fs::path("out") / name).string() + ".mp4";
 }
 
-int render_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
-                      demos::RenderOptions options, const VideoOverrides& overrides, bool progress) {
-  Comparison comparison = load_comparison(scene_paths, vary, overrides, options);
-  demos::ProgressBar bar(progress, scene_paths.front());
+int render_loaded(const Comparison& loaded, demos::RenderOptions options, bool progress) {
+  demos::ProgressBar bar(progress, loaded.paths.front());
   options.progress = [&bar](int done, int total) { bar.update(done, total); };
-  const std::vector<std::vector<demos::CheckResult>> checks = demos::render_panes(comparison.panes, options);
+  if (loaded.alone()) {
+    const std::vector<demos::CheckResult> checks = demos::render_scene(loaded.scenes.front(), options);
+    bar.finish();
+    if (!options.video_path.empty()) std::fprintf(stderr, "wrote %s\n", options.video_path.c_str());
+    if (!options.png_directory.empty()) std::fprintf(stderr, "wrote frames to %s/\n", options.png_directory.c_str());
+    return report_checks(loaded.paths.front(), checks);
+  }
+  const std::vector<std::vector<demos::CheckResult>> checks = demos::render_panes(loaded.panes, options);
   bar.finish();
   std::fprintf(stderr, "wrote %s\n", options.video_path.c_str());
   int exit_code = 0;
   for (size_t i = 0; i < checks.size(); ++i)
-    exit_code = std::max(exit_code, report_checks(comparison.paths[i] + " [" + comparison.panes[i].label + "]", checks[i]));
+    exit_code = std::max(exit_code, report_checks(loaded.paths[i] + " [" + loaded.panes[i].label + "]", checks[i]));
   return exit_code;
 }
 
-void render_panes_alone(const std::string& scene_path, const std::string& video_path, const VideoOverrides& overrides,
+int render_one(const std::string& scene_path, demos::RenderOptions options, const VideoOverrides& overrides,
+               bool progress) {
+  const Comparison loaded = load_panes(scene_path, overrides, options);
+  return render_loaded(loaded, options, progress);
+}
+
+int render_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
+                      demos::RenderOptions options, const VideoOverrides& overrides, bool progress) {
+  const Comparison loaded = load_comparison(scene_paths, vary, overrides, options);
+  return render_loaded(loaded, options, progress);
+}
+
+void render_panes_alone(const Comparison& loaded, const std::string& video_path, const VideoOverrides& overrides,
                         bool progress) {
-  const demos::CompareSpec compare = demos::load_scene(scene_path, overrides.settings).compare;
-  if (compare.values.empty()) return;
-  std::vector<demos::Scene> panes = demos::load_variants(scene_path, overrides.settings, compare);
-  for (size_t i = 0; i < panes.size(); ++i) {
+  if (loaded.alone()) return;
+  for (size_t i = 0; i < loaded.scenes.size(); ++i) {
+    demos::Scene pane = loaded.scenes[i];
     demos::RenderOptions options;
     options.video_path = demos::pane_video_path(video_path, int(i) + 1);
-    overrides.apply(panes[i], options);
-    demos::ProgressBar bar(progress, scene_path + " [" + compare.labels[i] + "]");
+    overrides.apply(pane, options);
+    demos::ProgressBar bar(progress, loaded.paths[i] + " [" + loaded.panes[i].label + "]");
     options.progress = [&bar](int done, int total) { bar.update(done, total); };
-    demos::render_scene(panes[i], options);
+    demos::render_scene(pane, options);
     bar.finish();
   }
 }

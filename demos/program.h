@@ -23,9 +23,14 @@ inline constexpr int kExitFailure = 4;   // anything else went wrong (the render
 // What an exit code means, in words: "the output cannot be written", "interrupted by signal 15".
 std::string exit_meaning(int exit_code);
 
-// What the command line changes in every scene it reads.
-struct VideoOverrides {
+// What the command line says about every scene a command reads (command_options.h adds the options).
+struct SceneArguments {
   std::vector<std::string> settings;  // --set KEY=VALUE, over the scene file
+};
+
+// What the command line changes in every scene a rendering command reads.
+struct VideoOverrides {
+  SceneArguments scene_arguments;
   std::string quality;  // empty: the scene's
   std::optional<int> width, height, fps, crf;
   std::string x264_preset;  // empty: the scene's
@@ -56,22 +61,24 @@ struct VideoOverrides {
 };
 
 // The panes of a comparison: one scene per value of --vary or of the file's [compare], or one per
-// scene file. Every pane gets the first's camera, video, playback and duration, and the first
-// scene the command line's video options. A pane points into `scenes`.
+// scene file; or one scene alone. Every pane gets the first's camera, video, playback and
+// duration, and the first scene the command line's video options. A pane points into `scenes`.
+// Each scene file is parsed once; the panes of one file are read from that parse.
 struct Comparison {
   std::vector<std::string> paths;      // the scene file of each pane
   std::vector<demos::Scene> scenes;
   std::vector<demos::Pane> panes;
+  bool alone() const { return scenes.size() == 1; }  // one scene, no comparison
 };
 Comparison load_comparison(const std::vector<std::string>& scene_paths, const std::string& vary,
                            const VideoOverrides& overrides, demos::RenderOptions& options);
 // One scene file as it renders: its [compare]'s panes, or itself alone in one pane.
 Comparison load_panes(const std::string& scene_path, const VideoOverrides& overrides, demos::RenderOptions& options);
 
-// The scene with the --set settings over it; what is odd but allowed is said on stderr.
-// With `typeset`, its [[equation]]s' TeX is typeset too (check_equations): a LaTeX error is the
-// scene's, with its file and line.
-Scene load(const std::string& scene_path, const std::vector<std::string>& settings, bool typeset = true);
+// The file's scene with the command line's arguments over it; what is odd but allowed is said on
+// stderr. With `typeset`, its [[equation]]s' TeX is typeset too (check_equations): a LaTeX error
+// is the scene's, with its file and line.
+Scene load(const SceneFile& file, const SceneArguments& arguments, bool typeset = true);
 
 // Prints each [[check]]'s result on stderr; the exit code: 0, or kExitCheckFailed if one failed.
 int report_checks(const std::string& scene_path, const std::vector<CheckResult>& results);
@@ -82,6 +89,10 @@ int report(const std::exception& error);
 std::string default_video_path(const std::string& scene_path, const std::string& out_directory);  // DIR/NAME.mp4
 std::string default_comparison_path(const std::vector<std::string>& scene_paths, const std::string& vary);
 
+// A scene alone, or panes side by side, into options.video_path, with a progress bar; its checks
+// reported; the exit code.
+int render_loaded(const Comparison& loaded, RenderOptions options, bool progress);
+
 // One scene (a comparison if its file has a [compare] table) into options.video_path; the exit code.
 int render_one(const std::string& scene_path, RenderOptions options, const VideoOverrides& overrides, bool progress);
 
@@ -89,9 +100,9 @@ int render_one(const std::string& scene_path, RenderOptions options, const Video
 int render_comparison(const std::vector<std::string>& scene_paths, const std::string& vary, RenderOptions options,
                       const VideoOverrides& overrides, bool progress);
 
-// Each pane of a comparison scene alone, beside the comparison (the gallery links them); their
-// checks were reported with the comparison. Nothing for a scene that is no comparison.
-void render_panes_alone(const std::string& scene_path, const std::string& video_path, const VideoOverrides& overrides,
+// Each pane of a comparison alone, beside its video (the gallery links them); their checks were
+// reported with the comparison. Nothing for a scene alone.
+void render_panes_alone(const Comparison& loaded, const std::string& video_path, const VideoOverrides& overrides,
                         bool progress);
 
 }  // namespace impulse::demos

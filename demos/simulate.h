@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 
 namespace impulse::demos {
 

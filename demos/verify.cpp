@@ -9,7 +9,6 @@
 
 #include "demos/film/moments.h"
 #include "demos/golden_manifest.h"
-#include "demos/scene/scene_world.h"
 #include "demos/verify_report.h"
 #include "render/image_compare.h"
 #include "render/png_io.h"
@@ -71,18 +70,17 @@ GoldenManifest manifest_of(const Scene& scene, const RenderOptions& options, con
                      : options.renderer.shadows == render::ShadowMethod::none     ? "none"
                                                                                   : "ground";
   manifest.settings = verify.settings;
-  const physics::World world = build_world(scene);
   for (const Still& still : stills) {
     manifest.moments.push_back(still.time);
     for (size_t i = 0; i < still.poses.size(); ++i)
-      manifest.poses.push_back({still.time, int(i), world.bodies()[i].name, still.poses[i].position, still.poses[i].orientation});
+      manifest.poses.push_back({still.time, int(i), scene.bodies[i].name, still.poses[i].position, still.poses[i].orientation});
   }
   return manifest;
 }
 
 // The bodies that moved or turned more than allowed since the goldens were recorded, one line each.
 std::vector<std::string> compare_poses(const Still& still, const GoldenManifest& manifest,
-                                       const std::vector<physics::Body>& bodies) {
+                                       const std::vector<physics::BodyDef>& bodies) {
   std::vector<std::string> differences;
   std::vector<const GoldenPose*> recorded;
   for (const GoldenPose& pose : manifest.poses)
@@ -131,7 +129,7 @@ void remove_failure_files(const std::string& directory, double time) {
 
 // One still against its golden and the recorded poses.
 MomentReport compare_still(const std::string& directory, const Still& still, const GoldenManifest& manifest,
-                           const std::vector<physics::Body>& bodies, const std::string& size_note) {
+                           const std::vector<physics::BodyDef>& bodies, const std::string& size_note) {
   const std::string golden_path = golden_file(directory, still.time);
   if (!fs::exists(golden_path))
     throw std::invalid_argument("no golden " + golden_path + " (the manifest lists it): record the goldens again with --update");
@@ -210,10 +208,9 @@ VerifyResult verify_scene(const std::vector<Pane>& panes, RenderOptions options,
                            listed(verify.settings));
   }
   const size_t notes_end = result.lines.size();  // the lines so far are about the whole run
-  const physics::World world = build_world(scene);
   std::vector<MomentReport> reports;
   for (const Still& still : stills) {
-    reports.push_back(compare_still(verify.golden_directory, still, manifest, world.bodies(), size_note));
+    reports.push_back(compare_still(verify.golden_directory, still, manifest, scene.bodies, size_note));
     result.passed = result.passed && reports.back().passed;
     result.lines.insert(result.lines.end(), reports.back().lines.begin(), reports.back().lines.end());
   }

@@ -101,7 +101,7 @@ bool ContactSolver::bounce_lane(int place, int lane_in_call, SolverBodies& solve
   BounceImpulses applied;
   if (!block.can_bounce || !bounce(m, &constraints_[m.first], solver_bodies.states[m.a], solver_bodies.inertia[m.a],
                                    solver_bodies.states[m.b], solver_bodies.inertia[m.b],
-                                   impact_threshold(settings_.restitution_threshold, gravity_direction_, m.normal), h, applied))
+                                   impact_threshold_, h, applied))
     return false;
   const int lane = lane_of_place_[place + lane_in_call].lane;
   for (int i = 0; i < m.count; ++i)

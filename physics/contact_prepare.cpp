@@ -4,6 +4,7 @@
 // packed for the sweeps; and at the end of the step the impulses kept for the next.
 #include "physics/contact_solver.h"
 #include "physics/normal_impulse.h"
+#include "physics/restitution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -93,8 +94,7 @@ void ContactSolver::plan(const std::vector<Contact>& contacts, const std::vector
 void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, const SolverBodies& solver_bodies,
                             const ContactSolverSettings& settings, const Vec3& gravity, Real h) {
   settings_ = settings;
-  const Real g = gravity.norm();
-  gravity_direction_ = g > 0 ? Vec3(gravity / g) : Vec3::Zero();
+  impact_threshold_ = impact_threshold(settings.restitution_threshold, gravity);
   const Real hertz = std::min(settings.contact_hertz, kMaxHertzPerSubstepRate / h);
   // One stiffness for every contact. Box2D makes contacts with static bodies twice as stiff; so
   // made, a 1 kg box between the ground and a 100 kg box rattles at 0.1-0.3 m/s for ever: its

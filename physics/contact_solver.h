@@ -128,7 +128,7 @@ class ContactSolver {
   bool impulses_stored_ = false;  // store_impulses() since the last prepare()
   Real h_ = 0, stored_h_ = 0;      // this step's sub-step, and the stored impulses'
   ContactSolverSettings settings_;
-  Vec3 gravity_direction_ = Vec3::Zero();  // unit, or zero without gravity: which contacts it loads (impact_threshold)
+  Real impact_threshold_ = 0;  // m/s: slower hits do not bounce (restitution.h, impact_threshold)
   Softness softness_;  // every contact's, for this step's sub-steps (prepare())
   bool backwards_ = false;  // this sub-step's order of a manifold's points (solve_lanes)
   ThreadTeam* team_ = nullptr;

@@ -14,15 +14,17 @@
 
 namespace impulse::physics {
 
-// How fast a pair must close to bounce. The threshold is for contacts that gravity loads: a box or
-// a ball resting on the floor closes a little every sub-step, and bouncing that would make it
-// jiggle. A contact gravity does not press together (two billiard balls on the cloth, any pair in
-// zero gravity) has no such closing: it bounces at any speed above kImpactFloor of the threshold,
-// so that in a rack of balls the slow hits that follow the break obey eq. 5 too. Between the two,
-// the threshold in proportion to how much the normal faces gravity (|n . g| / |g|).
+// How fast a pair must close to bounce. The threshold is for bodies that gravity holds together:
+// a box or a ball resting on the floor, or boxes leaning in a heap, close a little every sub-step
+// and rock at a few cm/s while they settle, and bouncing that would keep them jiggling. Those
+// speeds come from gravity, so the threshold is in proportion to it: `restitution_threshold` at
+// 9.81 m/s² (the default gravity), a sixth of it on the Moon, and in zero gravity (a rack of balls,
+// bodies in space) kImpactFloor of it, so that the slow hits after a break obey eq. 5 too. (In
+// proportion to |n . g| instead, a heap's leaning boxes bounced off each other for a minute.)
 constexpr Real kImpactFloor = Real(0.02);
-inline Real impact_threshold(Real restitution_threshold, const Vec3& gravity_direction, const Vec3& normal) {
-  return restitution_threshold * std::max(kImpactFloor, std::abs(normal.dot(gravity_direction)));
+constexpr Real kThresholdGravity = Real(9.81);  // m/s^2, the default [world] gravity's
+inline Real impact_threshold(Real restitution_threshold, const Vec3& gravity) {
+  return restitution_threshold * std::max(kImpactFloor, gravity.norm() / kThresholdGravity);
 }
 
 // What a bounce applied, for the step's totals: the normal impulse at each point that hit, and

@@ -30,13 +30,19 @@ class SoftStep {
                IntegratePosition&& integrate_position);
 
  private:
-  // Per thread that sweeps (two at most): the last sweep's epoch in which one of its manifolds
-  // bounced. On the heap, as the sweeps' progress counters: atomics cannot move with the world.
+  // Per thread that sweeps (two at most) and per parity of the sweep's epoch: the last sweep's
+  // epoch in which one of its manifolds bounced (bounce_flag). Two per thread, because a thread
+  // that has left a pass's barrier may already write the next pass's flag while another still
+  // reads this pass's: with one flag it could overwrite it, the other would read "nothing
+  // bounced", leave the passes and wait at another barrier than this one, for ever. A write two
+  // passes on comes after the next barrier, which every reader has passed. On the heap, as the
+  // sweeps' progress counters: atomics cannot move with the world.
   static constexpr int kImpactPasses = 32;
   struct alignas(64) BounceEpoch {
     std::atomic<uint64_t> value{0};
   };
-  std::unique_ptr<BounceEpoch[]> bounced_ = std::make_unique<BounceEpoch[]>(2);
+  std::unique_ptr<BounceEpoch[]> bounced_ = std::make_unique<BounceEpoch[]>(4);
+  std::atomic<uint64_t>& bounce_flag(int thread, uint64_t epoch) { return bounced_[2 * thread + (epoch & 1)].value; }
 };
 
 template <class IntegrateVelocity, class IntegratePosition>
@@ -56,8 +62,8 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
   // Whether a thread bounced something in the sweep of `sweep_epoch` (read after a barrier: every
   // thread reads the same and takes the same way).
   auto bounced_in = [&](uint64_t sweep_epoch) {
-    return bounced_[0].value.load(std::memory_order_relaxed) == sweep_epoch ||
-           bounced_[1].value.load(std::memory_order_relaxed) == sweep_epoch;
+    return bounce_flag(0, sweep_epoch).load(std::memory_order_relaxed) == sweep_epoch ||
+           bounce_flag(1, sweep_epoch).load(std::memory_order_relaxed) == sweep_epoch;
   };
   schedule.run(team, [&](int thread) {
     schedule.slot_share(thread, integrate_velocity);
@@ -68,7 +74,7 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
     joint_stage(thread, [&] { joints->solve(bodies, 1 / h, true); });
     bool bounced = false;
     schedule.sweep_share(thread, epoch + 1, [&](int place, int width) { bounced |= contacts.solve_manifolds(place, width, bodies, 1 / h, true); });
-    if (bounced) bounced_[thread].value.store(epoch + 1, std::memory_order_relaxed);  // only threads 0 and 1 have manifolds
+    if (bounced) bounce_flag(thread, epoch + 1).store(epoch + 1, std::memory_order_relaxed);  // only threads 0 and 1 have manifolds
     meet();
     // The impacts pass on: a bounce sets bodies moving into their neighbours within the same
     // sub-step, which the sweep above may have visited before it. Pass after pass of bounces
@@ -80,7 +86,7 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
     for (uint64_t pass = epoch + 4, last = epoch + 1; bounced_in(last) && pass < epoch + 4 + kImpactPasses; last = pass++) {
       bounced = false;
       schedule.sweep_share(thread, pass, [&](int place, int width) { bounced |= contacts.bounce_manifolds(place, width, bodies, h); });
-      if (bounced) bounced_[thread].value.store(pass, std::memory_order_relaxed);
+      if (bounced) bounce_flag(thread, pass).store(pass, std::memory_order_relaxed);
       meet();
       any_bounced = true;
     }

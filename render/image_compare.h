@@ -8,7 +8,7 @@
 //   of more than `max_region_pixels`, or when more than `max_differing_share` of all pixels differ.
 // A small body that changes colour, moves or vanishes is one region however large the frame is.
 // The defaults are measured: README.md, "verify", has the table. `impulse verify` and the
-// project's golden tests (tests/golden_image.h) both use them.
+// project's golden tests (tests/support/golden_image.h) both use them.
 #pragma once
 #include <cstdint>
 #include <string>

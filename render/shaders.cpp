@@ -1,3 +1,6 @@
+// One file over 400 lines, on purpose: it is GLSL text, every program's stages built from the
+// same pieces (kVersion, kLighting, kSurface) by concatenation, so that a change of lighting or
+// of the sleeping bodies' hatching is made once and read beside every stage that uses it.
 #include "render/shaders.h"
 
 namespace impulse::render::shaders {

@@ -26,11 +26,12 @@ export LSAN_OPTIONS="suppressions=$san/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export TSAN_OPTIONS="suppressions=$san/tsan.supp:print_suppressions=0:second_deadlock_stack=1:halt_on_error=1"
 
-# The tests ThreadSanitizer runs (ctest -R): two threads in the solver's team (the determinism
-# test's two-thread run, the 1000-box heap, the 210-box pyramid) and whole scenes rendered with
-# the simulation thread, the drawing thread and the encoder's worker (film_tests, program_tests).
+# The tests ThreadSanitizer runs (ctest -R): the solver's thread team and sweep schedule alone
+# and two threads in the team (the determinism test's two-thread run, the 1000-box heap, the
+# 21-box pyramid); the frame pipeline alone, and whole scenes rendered with the picturing thread,
+# the drawing thread and the encoder's worker (film_tests, program_tests).
 tsan_targets=(physics_tests physics_box_tests film_tests program_tests impulse)
-tsan_tests='^(Determinism\.|Heap\.Thousand|Stack\.PyramidOf21Boxes|Video\.|RenderVideo\.|Playback\.|Set\.|Simulate\.|Compare\.)'
+tsan_tests='^(ThreadTeam\.|SweepSchedule\.|FramePipeline\.|Determinism\.|Heap\.Thousand|Stack\.PyramidOf21Boxes|Video\.|RenderVideo\.|Playback\.|Set\.|Simulate\.|Compare\.)'
 
 # Left out of the ASan+UBSan run, and only for their time: the four longest runs of the solver,
 # 389 s, 355 s, 265 s and 135 s under ASan+UBSan on two cores (11-70 s without). They run the code

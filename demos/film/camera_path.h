@@ -2,7 +2,7 @@
 // body (keeping the offset it had at the start, smoothed over about 0.3 s so a bounce does not
 // shake the view).
 #pragma once
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "physics/math.h"
 #include "render/draw_list.h"
 

@@ -1,12 +1,12 @@
 // The 2D overlay of one frame of a scene: title, legend, captions, the clock and playback speed,
 // a label with the value beside the chosen arrow, the live plots, and the typeset equations.
 #pragma once
+#include "demos/film/impact_numbers.h"
 #include "demos/film/live_equations.h"
 #include "demos/film/marks.h"
 #include "demos/film/plot_recorder.h"
 #include "demos/film/scene_draw_list.h"
-#include "demos/scene/scene_file.h"
-#include "demos/film/world_take.h"
+#include "demos/scene/scene.h"
 #include "render/camera_view.h"
 #include "render/overlay.h"
 
@@ -14,16 +14,6 @@
 #include <vector>
 
 namespace impulse::demos {
-
-// The contact and body whose normal impulse the "impulse" label writes: the first largest on a
-// moving body (on `label_body` only, unless it is -1). Null when no contact pushes.
-struct LabelledImpulse {
-  const physics::ContactRecord* contact = nullptr;
-  int body = -1;
-};
-LabelledImpulse labelled_impulse(const std::vector<physics::ContactRecord>& contacts,
-                                 const std::vector<physics::Body>& bodies, int label_body);
-int label_body(const Scene& scene);  // [overlay] label_body's index, -1 for any
 
 struct FrameState {
   double time = 0;            // simulated s shown

@@ -1,6 +1,7 @@
 #include "demos/film/live_equations.h"
 
 #include "demos/film/marks.h"
+#include "demos/scene/scene_error.h"
 
 #include <algorithm>
 #include <cstdio>

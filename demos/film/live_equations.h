@@ -6,8 +6,8 @@
 // The scene loader runs no program (it stays quick for the bad-scene tests and the fuzzer), so
 // the TeX of a scene is checked here, by check_equations(), which `check` and every render call.
 #pragma once
-#include "demos/film/world_take.h"
-#include "demos/scene/scene_file.h"
+#include "demos/film/impact_numbers.h"
+#include "demos/scene/scene.h"
 #include "render/overlay.h"
 #include "tex/tex_typesetter.h"
 

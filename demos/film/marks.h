@@ -1,7 +1,7 @@
 // The teaching marks drawn over the bodies, one convention for every demo (demos/README.md, "What
 // a frame shows"): their colours, and the scales that turn impulses and velocities into arrow lengths.
 #pragma once
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "demos/film/take_summary.h"
 #include "render/camera_view.h"
 #include "render/overlay.h"

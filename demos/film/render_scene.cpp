@@ -27,7 +27,7 @@ namespace impulse::demos {
 namespace {
 
 constexpr int kFramesInFlight = 3;  // drawn, being finished, waiting: enough to keep both busy
-constexpr size_t kPicturesAhead = 2;  // frames the simulation may run ahead of the drawing
+constexpr size_t kPicturesAhead = 2;  // pictures made ahead of the drawing
 const render::Colour kBetweenPanes{0.93f, 0.93f, 0.94f};
 
 bool wants_png(const RenderOptions& options, int64_t index, int frame_count) {
@@ -168,9 +168,10 @@ std::string settings_comment(const std::vector<Pane>& panes) {
 
 }  // namespace
 
-// Three threads, each a stage: the simulation (and what each frame shows) runs ahead on its own
-// thread; this thread draws (with llvmpipe's threads); a worker paints the overlay and encodes.
-// Bounded queues between them keep memory flat whatever the video's length.
+// The film steps every world to its end first (one sample a frame kept). Then three threads, each
+// a stage: what each frame shows (draw lists, overlay) is made ahead on its own thread; this
+// thread draws (with llvmpipe's threads); a worker paints the overlay and encodes. Bounded queues
+// between them keep the frames in flight few whatever the video's length.
 std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& panes, const RenderOptions& options) {
   const Scene& scene = *panes.at(0).scene;  // sets the video, the captions and the frame's overlay
   render::VideoSettings video = to_render(scene.video);
@@ -212,7 +213,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   });
 
   HandoffQueue<FilmPicture> pictures(kPicturesAhead);
-  std::thread simulation([&] {
+  std::thread picturing([&] {
     try {
       while (film.next_frame() < film.picture_count()) {
         FilmPicture picture;
@@ -224,15 +225,15 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
       pictures.fail(std::current_exception());
     }
   });
-  // However this function ends, the simulation stops before the film it reads goes.
-  struct StopSimulation {
+  // However this function ends, the picturing stops before the film it reads goes.
+  struct StopPicturing {
     HandoffQueue<FilmPicture>& pictures;
     std::thread& thread;
-    ~StopSimulation() {
+    ~StopPicturing() {
       pictures.close();
       thread.join();
     }
-  } stop{pictures, simulation};
+  } stop{pictures, picturing};
 
   render::Frame pane_frame;
   while (std::optional<FilmPicture> picture = pictures.pop()) {

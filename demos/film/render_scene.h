@@ -1,10 +1,12 @@
 // Runs a scene and films it: world -> steps -> draw list -> frame (+ overlay) -> MP4 (and PNGs).
-// The simulation runs a couple of frames ahead on a thread of its own (scene_film.h); drawing
-// happens on the calling thread (llvmpipe adds its own threads); the overlay, PNG files and the
-// encoder run on a worker thread, a few frames behind (render/frame_pipeline.h).
+// The world is stepped once, to the scene's end, on the calling thread before the first frame is
+// drawn (the Film's constructor, scene_film.h). Then a thread of its own turns the samples into
+// each frame's draw lists and overlay, a couple of frames ahead; drawing happens on the calling
+// thread (llvmpipe adds its own threads); the overlay, PNG files and the encoder run on a worker
+// thread, a few frames behind (frame_pipeline.h).
 #pragma once
 #include "demos/film/film.h"
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "physics/world.h"
 #include "render/draw_list.h"
 #include "render/renderer.h"

@@ -1,6 +1,6 @@
 // The scene's plain settings as the renderer and the encoder take them.
 #pragma once
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "render/draw_list.h"
 #include "render/video_encoder.h"
 

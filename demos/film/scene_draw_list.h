@@ -2,7 +2,7 @@
 // moment, and the marks (contact points, normals, impulses, velocities) the scene switches on.
 #pragma once
 #include "demos/film/marks.h"
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "physics/world.h"
 #include "render/draw_list.h"
 

@@ -1,5 +1,6 @@
 #include "demos/film/scene_film.h"
 
+#include "demos/film/impulse_label.h"
 #include "demos/film/moments.h"
 
 #include <algorithm>

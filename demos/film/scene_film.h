@@ -12,7 +12,7 @@
 #include "demos/film/marks.h"
 #include "demos/film/playback_timeline.h"
 #include "demos/film/scene_draw_list.h"
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "demos/film/world_take.h"
 #include "render/draw_list.h"
 #include "render/overlay.h"

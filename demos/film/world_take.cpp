@@ -1,6 +1,6 @@
 #include "demos/film/world_take.h"
 
-#include "demos/film/frame_overlay.h"
+#include "demos/film/impulse_label.h"
 #include "demos/scene/scene_world.h"
 
 #include <algorithm>
@@ -20,13 +20,6 @@ bool needs_summary(const Scene& scene) {
 }
 
 }  // namespace
-
-bool shows_impact_numbers(const Scene& scene) {
-  if (scene.overlay.equation != "none") return true;
-  for (const EquationCue& cue : scene.equations)
-    if (cue.live) return true;
-  return false;
-}
 
 WorldTake::WorldTake(const Scene& scene)
     : scene_(scene),
@@ -122,8 +115,7 @@ void WorldTake::note_impact(const std::vector<Motion>& before) {
                     (b.inverse_inertia * impact.offset_b.cross(n)).cross(impact.offset_b))
                        .dot(n);
   // The pair's e, as the solver takes it (its own, or the two bodies' mixed: physics/materials.h).
-  if (impact.body_a >= 0 && impact.body_b >= 0) impact.restitution = world_.contact_material(impact.body_a, impact.body_b).restitution;
-  else impact.restitution = bodies[std::max(impact.body_a, impact.body_b)].material.restitution;
+  impact.restitution = world_.contact_material(impact.body_a, impact.body_b).restitution;
   impact.inverse_mass_a = impact.body_a >= 0 ? bodies[impact.body_a].inv_mass : 0;
   impact.inverse_mass_b = impact.body_b >= 0 ? bodies[impact.body_b].inv_mass : 0;
   impact.impulse = strongest->normal_impulse;

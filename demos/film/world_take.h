@@ -4,9 +4,10 @@
 // the film keeps is one FrameSample a frame.
 #pragma once
 #include "demos/film/contact_hold.h"
+#include "demos/film/impact_numbers.h"
 #include "demos/film/plot_recorder.h"
 #include "demos/film/scene_draw_list.h"
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "demos/film/take_summary.h"
 #include "physics/world.h"
 
@@ -14,23 +15,6 @@
 #include <vector>
 
 namespace impulse::demos {
-
-// An impact's numbers, for eq. 8 and 13 on screen:
-//   J = -(1 + e) v_ab.n / (1/m_a + 1/m_b + [(I_a^-1 (r_a x n)) x r_a + (I_b^-1 (r_b x n)) x r_b].n)
-struct ImpactNumbers {
-  double time = -1;        // s: the step it happened in; < 0: none yet
-  int body_a = -1, body_b = -1;
-  double approach = 0;     // m/s: v_ab.n of the centres just before the step (negative while closing; n pushes a)
-  double point_approach = 0;  // m/s: the same at the contact point, spins included (v + w x r, eq. 11)
-  double restitution = 0;  // e of the pair
-  double inverse_mass_a = 0, inverse_mass_b = 0;  // 1/kg (0: static)
-  physics::Vec3 offset_a = physics::Vec3::Zero(), offset_b = physics::Vec3::Zero();  // m: r_a, r_b, centre to contact
-  double angular = 0;      // 1/kg: eq. 13's angular term, [...].n above
-  double impulse = 0;      // N s: what the solver gave, along n on a
-};
-
-// Whether a frame shows an impact's numbers ([overlay] equation, or an [[equation]] with live values).
-bool shows_impact_numbers(const Scene& scene);
 
 // One world at one frame.
 struct FrameSample {

@@ -27,11 +27,11 @@ void add_body(TableReader& r, const physics::BodyDef& def, Colour colour, Scene&
   scene.colours.push_back(colour);
 }
 
-void read_body(const toml::table& table, const std::string& path, int index, Scene& scene) {
+void read_body(const TableReader& top, const toml::table& table, int index, Scene& scene) {
   physics::BodyDef def;
   def.name = "body " + std::to_string(index + 1);
   if (auto name = table.get_as<std::string>("name")) def.name = name->get();
-  TableReader r(table, path, "[[body]] '" + def.name + "'");
+  TableReader r = top.child(table, "[[body]] '" + def.name + "'");
   r.get("name");
   const std::string shape = r.choice("shape", "", {"sphere", "box", "plane"});
   if (shape == "sphere") {
@@ -83,7 +83,7 @@ int body_index(TableReader& r, const Scene& scene, std::string_view key) {
 void read_world(TableReader& top, Scene& scene) {
   const toml::table* t = top.table("world");
   if (!t) return;
-  TableReader r(*t, scene.path, "[world]");
+  TableReader r = top.child(*t, "[world]");
   auto& w = scene.world;
   w.gravity = r.vec3("gravity", w.gravity);
   w.time_step = 1 / r.number("step_rate", 1 / w.time_step, 1, 100000);
@@ -123,7 +123,7 @@ void read_material_pairs(TableReader& top, Scene& scene) {
   const toml::array* pairs = top.table_list("material_pair");
   if (!pairs) return;
   for (size_t i = 0; i < pairs->size(); ++i) {
-    TableReader r(*pairs->get(i)->as_table(), scene.path, "[[material_pair]] " + std::to_string(i + 1));
+    TableReader r = top.child(*pairs->get(i)->as_table(), "[[material_pair]] " + std::to_string(i + 1));
     const toml::node* between = r.get("between");
     const toml::array* names = between ? between->as_array() : nullptr;
     const char* form = "two materials, like between = [\"ball\", \"cloth\"] (a body says material = \"ball\")";
@@ -152,7 +152,7 @@ void read_material_pairs(TableReader& top, Scene& scene) {
 void read_bodies(TableReader& top, Scene& scene) {
   const toml::array* bodies = top.table_list("body");
   if (!bodies) return;
-  for (size_t i = 0; i < bodies->size(); ++i) read_body(*bodies->get(i)->as_table(), scene.path, int(i), scene);
+  for (size_t i = 0; i < bodies->size(); ++i) read_body(top, *bodies->get(i)->as_table(), int(i), scene);
 }
 
 void read_joints(TableReader& top, Scene& scene) {
@@ -163,7 +163,7 @@ void read_joints(TableReader& top, Scene& scene) {
     physics::JointDef def;
     def.name = "joint " + std::to_string(i + 1);
     if (auto name = table.get_as<std::string>("name")) def.name = name->get();
-    TableReader r(table, scene.path, "[[joint]] '" + def.name + "'");
+    TableReader r = top.child(table, "[[joint]] '" + def.name + "'");
     r.get("name");
     const std::string type = r.choice("type", "", {"ball", "hinge", "rod", "rope"});
     def.body_a = body_index(r, scene, "a");

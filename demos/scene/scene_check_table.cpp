@@ -65,7 +65,7 @@ void read_checks(TableReader& top, Scene& scene) {
   int index = 0;
   for (const toml::node& item : *checks) {
     ++index;
-    TableReader r(*item.as_table(), scene.path, "[[check]] " + std::to_string(index));
+    TableReader r = top.child(*item.as_table(), "[[check]] " + std::to_string(index));
     CheckSpec check;
     check.kind = r.choice("kind", "", {"momentum", "energy", "at_rest", "inside", "velocity", "height", "drift", "penetration"});
     const bool needs_body = check.kind == "at_rest" || check.kind == "inside" || check.kind == "velocity" ||

@@ -54,9 +54,9 @@ CompareSpec compare_from_vary(const std::string& vary) {
 void read_compare(TableReader& top, Scene& scene) {
   const toml::table* t = top.table("compare");
   if (!t) return;
-  TableReader r(*t, scene.path, "[compare]");
+  TableReader r = top.child(*t, "[compare]");
   CompareSpec& compare = scene.compare;
-  compare.origin = scene.path + ":" + std::to_string(t->source().begin.line) + ": [compare]";
+  compare.origin = r.where(nullptr, "");  // "FILE:LINE: [compare]"
   compare.key = r.string("vary", "");
   if (compare.key.empty()) r.fail(nullptr, "vary", "missing: the field whose values the panes show, e.g. \"world.method\"");
   if (const std::string reason = unvariable_reason(compare.key); !reason.empty()) r.fail(r.get("vary"), "vary", reason);
@@ -79,14 +79,14 @@ void read_compare(TableReader& top, Scene& scene) {
   r.finish();
 }
 
-std::vector<Scene> load_variants(const std::string& path, const std::vector<std::string>& settings,
+std::vector<Scene> load_variants(const SceneFile& file, const std::vector<std::string>& settings,
                                  const CompareSpec& compare) {
   std::vector<Scene> scenes;
   for (size_t i = 0; i < compare.values.size(); ++i) {
     std::vector<std::string> pane_settings = settings;
     pane_settings.push_back(compare.key + "=" + compare.values[i]);
     try {
-      scenes.push_back(load_scene(path, pane_settings));
+      scenes.push_back(file.scene(pane_settings));
     } catch (const SceneError& error) {
       throw SceneError(compare.origin + " value " + std::to_string(i + 1) + ": " + error.what());
     }

@@ -23,10 +23,10 @@ std::string unvariable_reason(const std::string& key);
 // (body[0].velocity=[1, 0, 0],[2, 0, 0]). Throws SceneError naming the argument.
 CompareSpec compare_from_vary(const std::string& vary);
 
-// The scenes of a comparison, one per value: each is the file read again with `settings` and
-// KEY=VALUE over it, keeping the [[check]]s about its pane (pane 0 or its number), without
+// The scenes of a comparison, one per value: each is read from the parsed file with `settings`
+// and KEY=VALUE over it, keeping the [[check]]s about its pane (pane 0 or its number), without
 // [compare]. A value the field refuses is reported with `compare.origin`.
-std::vector<Scene> load_variants(const std::string& path, const std::vector<std::string>& settings,
+std::vector<Scene> load_variants(const SceneFile& file, const std::vector<std::string>& settings,
                                  const CompareSpec& compare);
 
 }  // namespace impulse::demos

@@ -11,7 +11,7 @@ void read_equations(TableReader& top, Scene& scene) {
   int number = 0;
   for (const toml::node& item : *equations) {
     const std::string where = "[[equation]] " + std::to_string(++number);
-    TableReader r(*item.as_table(), scene.path, where);
+    TableReader r = top.child(*item.as_table(), where);
     EquationCue cue;
     cue.tex = r.string("tex", "");
     if (cue.tex.find_first_not_of(" \t\r\n") == std::string::npos)

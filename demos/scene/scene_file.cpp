@@ -37,27 +37,32 @@ std::string read_scene_text(const std::string& path) {
 
 }  // namespace
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& settings) {
-  const std::string text = read_scene_text(path);
-  toml::table root;
+SceneFile::SceneFile(std::string path) : path_(std::move(path)) {
+  const std::string text = read_scene_text(path_);
   try {
-    root = toml::parse(text, path);
+    root_ = toml::parse(text, path_);
   } catch (const toml::parse_error& error) {
     std::ostringstream message;
-    message << path << ':' << error.source().begin.line << ": " << error.description();
+    message << path_ << ':' << error.source().begin.line << ": " << error.description();
     if (error.description().find("utf-8") != std::string_view::npos) message << " (save the file as UTF-8)";
     throw SceneError(message.str());
   }
+}
 
-  const OverrideNodes written = apply_overrides(root, settings);
-  const OverrideScope scope(written);
+Scene SceneFile::scene(const std::vector<std::string>& settings) const {
+  // The settings write into a copy: the one parse serves every scene read from the file (each
+  // pane of a comparison). Its nodes are paired with the parsed ones, which have the lines.
+  toml::table root = root_;
+  NodeOrigins origins;
+  origins.arguments = apply_overrides(root, settings);
+  origins.pair(root, root_);
 
   Scene scene;
-  scene.path = path;
+  scene.path = path_;
   scene.settings = settings;
-  TableReader top(root, path, "scene");
+  TableReader top(root, path_, &origins, "scene");
   if (const toml::table* t = top.table("scene")) {
-    TableReader r(*t, path, "[scene]");
+    TableReader r = top.child(*t, "[scene]");
     scene.title = r.string("title", "");
     scene.duration = r.number("duration", scene.duration, 0, 3600, true);
     r.finish();
@@ -72,14 +77,12 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& settin
   read_compare(top, scene);
   read_checks(top, scene);
   top.finish();
-  if (scene.bodies.empty()) throw SceneError(path + ":1: scene: no bodies; add at least one [[body]] table");
+  if (scene.bodies.empty()) throw SceneError(path_ + ":1: scene: no bodies; add at least one [[body]] table");
   return scene;
 }
 
-int find_body(const Scene& scene, std::string_view name) {
-  for (size_t i = 0; i < scene.bodies.size(); ++i)
-    if (scene.bodies[i].name == name) return int(i);
-  return -1;
+Scene load_scene(const std::string& path, const std::vector<std::string>& settings) {
+  return SceneFile(path).scene(settings);
 }
 
 }  // namespace impulse::demos

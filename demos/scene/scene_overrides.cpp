@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string_view>
 
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene_error.h"
 
 namespace impulse::demos {
 namespace {
@@ -125,7 +125,7 @@ toml::table& select(const std::string& argument, const std::string& list_name, t
                        (known.empty() ? "" : " (named: " + known + ")"));
 }
 
-void apply_override(toml::table& root, const std::string& argument, OverrideNodes& written) {
+void apply_override(toml::table& root, const std::string& argument, WrittenNodes& written) {
   const size_t equals = argument.find('=');
   if (equals == std::string::npos || equals == 0)
     refuse(argument, "expected KEY=VALUE, like world.friction=false or body[ball].restitution=0.2");
@@ -170,8 +170,8 @@ void apply_override(toml::table& root, const std::string& argument, OverrideNode
 
 }  // namespace
 
-OverrideNodes apply_overrides(toml::table& root, const std::vector<std::string>& settings) {
-  OverrideNodes written;
+WrittenNodes apply_overrides(toml::table& root, const std::vector<std::string>& settings) {
+  WrittenNodes written;
   for (const std::string& argument : settings) apply_override(root, argument, written);
   return written;
 }

@@ -18,11 +18,13 @@
 
 namespace impulse::demos {
 
-// The nodes the arguments wrote, each with its argument (the scene's messages name it).
-using OverrideNodes = std::map<const toml::node*, std::string>;
+// The nodes the --set arguments wrote, each with its argument ("--set body[0].mass=2"), which the
+// scene's messages name instead of a line.
+using WrittenNodes = std::map<const toml::node*, std::string>;
 
-// Throws SceneError naming the argument for a malformed one or a path that names nothing.
-OverrideNodes apply_overrides(toml::table& root, const std::vector<std::string>& settings);
+// Writes each argument into `root`; returns the nodes written. Throws SceneError naming the
+// argument for a malformed one or a path that names nothing.
+WrittenNodes apply_overrides(toml::table& root, const std::vector<std::string>& settings);
 
 // "did you mean 'x'?" for the closest of `known` to `word` (a typo or two away), else "".
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& known);

@@ -76,12 +76,12 @@ void read_lattice(TableReader& r, Scene& scene) {
 void read_patterns(TableReader& top, Scene& scene) {
   if (const toml::array* list = top.table_list("pyramid"))
     for (size_t i = 0; i < list->size(); ++i) {
-      TableReader r(*list->get(i)->as_table(), scene.path, "[[pyramid]] " + std::to_string(i + 1));
+      TableReader r = top.child(*list->get(i)->as_table(), "[[pyramid]] " + std::to_string(i + 1));
       read_pyramid(r, scene);
     }
   if (const toml::array* list = top.table_list("lattice"))
     for (size_t i = 0; i < list->size(); ++i) {
-      TableReader r(*list->get(i)->as_table(), scene.path, "[[lattice]] " + std::to_string(i + 1));
+      TableReader r = top.child(*list->get(i)->as_table(), "[[lattice]] " + std::to_string(i + 1));
       read_lattice(r, scene);
     }
 }

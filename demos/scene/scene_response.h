@@ -3,7 +3,7 @@
 // (--response, --set, --vary), the current directory's. "reference" is the engine's own answer to
 // the exercise: listing 1 corrected (physics/listing_reference.h), as a correct file would do it.
 #pragma once
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "demos/scene/table_reader.h"
 
 namespace impulse::demos {

@@ -30,8 +30,7 @@ CameraSetting read_camera_fields(TableReader& r, CameraSetting camera) {
 void read_camera(TableReader& top, Scene& scene) {
   const toml::table* t = top.table("camera");
   if (!t) return;
-  const std::string& path = scene.path;
-  TableReader r(*t, path, "[camera]");
+  TableReader r = top.child(*t, "[camera]");
   scene.camera = read_camera_fields(r, scene.camera);
   scene.camera_motion.follow = body_name(r, "follow", scene);
   if (const toml::node* node = r.get("keyframe")) {
@@ -41,7 +40,7 @@ void read_camera(TableReader& top, Scene& scene) {
     CameraSetting previous = scene.camera;
     double previous_time = 0;
     for (const toml::node& item : *keyframes) {
-      TableReader k(*item.as_table(), path, "[[camera.keyframe]]");
+      TableReader k = r.child(*item.as_table(), "[[camera.keyframe]]");
       CameraKeyframe keyframe;
       keyframe.time = k.number("time", -1, 0, 3600, true);
       if (keyframe.time < 0) k.fail(nullptr, "time", "missing: when (s) the camera is there");
@@ -62,7 +61,7 @@ void read_camera(TableReader& top, Scene& scene) {
 void read_video(TableReader& top, Scene& scene) {
   const toml::table* t = top.table("video");
   if (!t) return;
-  TableReader r(*t, scene.path, "[video]");
+  TableReader r = top.child(*t, "[video]");
   auto& v = scene.video;
   const std::string quality = r.choice("quality", "medium", {"low", "medium", "high"});
   v = *quality_preset(quality);
@@ -79,7 +78,7 @@ void read_video(TableReader& top, Scene& scene) {
 void read_draw(TableReader& top, Scene& scene) {
   const toml::table* t = top.table("draw");
   if (!t) return;
-  TableReader r(*t, scene.path, "[draw]");
+  TableReader r = top.child(*t, "[draw]");
   DrawOptions& d = scene.draw;
   d.contact_points = r.boolean("contact_points", d.contact_points);
   d.contact_normals = r.boolean("contact_normals", d.contact_normals);
@@ -99,7 +98,7 @@ void read_draw(TableReader& top, Scene& scene) {
 void read_overlay(TableReader& top, Scene& scene) {
   const toml::table* t = top.table("overlay");
   if (!t) return;
-  TableReader r(*t, scene.path, "[overlay]");
+  TableReader r = top.child(*t, "[overlay]");
   OverlayOptions& o = scene.overlay;
   o.title = r.boolean("title", o.title);
   o.clock = r.boolean("clock", o.clock);
@@ -135,7 +134,7 @@ void read_captions(TableReader& top, Scene& scene) {
   const toml::array* captions = top.table_list("caption");
   if (!captions) return;
   for (const toml::node& item : *captions) {
-    TableReader r(*item.as_table(), scene.path, "[[caption]]");
+    TableReader r = top.child(*item.as_table(), "[[caption]]");
     CaptionCue cue;
     cue.text = r.string("text", "");
     if (cue.text.empty()) r.fail(r.get("text"), "text", "missing: the caption's words, in quotes");
@@ -150,7 +149,7 @@ void read_captions(TableReader& top, Scene& scene) {
 void read_playback(TableReader& top, Scene& scene) {
   const toml::table* t = top.table("playback");
   if (!t) return;
-  TableReader r(*t, scene.path, "[playback]");
+  TableReader r = top.child(*t, "[playback]");
   PlaybackOptions& p = scene.playback;
   p.speed = r.number("speed", p.speed, 0.01, 100);
   p.slow_motion_impulse = r.number("slow_motion_impulse", p.slow_motion_impulse, 0);

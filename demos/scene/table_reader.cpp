@@ -1,38 +1,47 @@
 #include "demos/scene/table_reader.h"
 
-#include "demos/scene/scene_file.h"
-#include "demos/scene/scene_overrides.h"
+#include "demos/scene/scene_error.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
 namespace impulse::demos {
 
-namespace {
-thread_local const std::map<const toml::node*, std::string>* overrides = nullptr;
-}  // namespace
+void NodeOrigins::pair(const toml::node& copy, const toml::node& original) {
+  parsed[&copy] = &original;
+  if (const toml::table* table = copy.as_table()) {
+    const toml::table* from = original.as_table();
+    if (!from) return;
+    for (const auto& [key, node] : *table)
+      if (const toml::node* match = from->get(key.str())) pair(node, *match);
+  } else if (const toml::array* array = copy.as_array()) {
+    const toml::array* from = original.as_array();
+    if (!from) return;
+    for (size_t i = 0; i < std::min(array->size(), from->size()); ++i) pair(*array->get(i), *from->get(i));
+  }
+}
 
-OverrideScope::OverrideScope(const std::map<const toml::node*, std::string>& written) { overrides = &written; }
-OverrideScope::~OverrideScope() { overrides = nullptr; }
-
-TableReader::TableReader(const toml::table& table, std::string file, std::string where)
-    : table_(table), file_(std::move(file)), where_(std::move(where)) {}
+TableReader::TableReader(const toml::table& table, std::string file, const NodeOrigins* origins, std::string where)
+    : table_(table), file_(std::move(file)), origins_(origins), where_(std::move(where)) {}
 
 void TableReader::fail(const toml::node* node, std::string_view key, const std::string& reason) const {
   throw SceneError(where(node, key) + ": " + reason);
 }
 
 std::string TableReader::where(const toml::node* node, std::string_view key) const {
-  const auto& source = node ? node->source() : table_.source();
+  const toml::node* shown = node ? node : &table_;
   std::ostringstream message;
   // A value given on the command line is named by its --set argument, not by a line of the file.
   const std::string* set_by = nullptr;
-  if (overrides && node)
-    if (const auto found = overrides->find(node); found != overrides->end()) set_by = &found->second;
+  if (origins_ && node)
+    if (const auto found = origins_->arguments.find(node); found != origins_->arguments.end()) set_by = &found->second;
+  if (origins_)
+    if (const auto found = origins_->parsed.find(shown); found != origins_->parsed.end()) shown = found->second;
   if (set_by)
     message << *set_by << ": " << where_;
   else
-    message << file_ << ':' << source.begin.line << ": " << where_;
+    message << file_ << ':' << shown->source().begin.line << ": " << where_;
   if (!key.empty()) message << " field '" << key << "'";
   return message.str();
 }

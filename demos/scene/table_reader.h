@@ -1,13 +1,15 @@
 // Reads one TOML table of a scene file, checking each field's type and range. finish() refuses
 // any key it was never asked for, so a typo is never silently ignored.
 #pragma once
-#include "physics/math.h"
+#include "demos/scene/scene_overrides.h"
 #include "demos/scene/view_options.h"
+#include "physics/math.h"
 
 #include <toml++/toml.h>
 
 #include <cmath>
 #include <map>
+#include <unordered_map>
 #include <set>
 #include <span>
 #include <string>
@@ -15,20 +17,26 @@
 
 namespace impulse::demos {
 
-// While a scene is read, the values --set wrote: a message about one names its argument instead
-// of a line of the file. One scope at a time per thread.
-class OverrideScope {
- public:
-  explicit OverrideScope(const std::map<const toml::node*, std::string>& written);
-  ~OverrideScope();
-  OverrideScope(const OverrideScope&) = delete;
-  OverrideScope& operator=(const OverrideScope&) = delete;
+// Where each value of the tables a scene is read from came from, for its messages. The tables are
+// a copy of the file's parse with the --set arguments written over it (scene_file.h), and a copy
+// has no lines (toml++ copies no source regions): each copied node is paired with the parsed one.
+struct NodeOrigins {
+  WrittenNodes arguments;  // written by --set: named by the argument
+  std::unordered_map<const toml::node*, const toml::node*> parsed;  // a copied node -> the parsed node, with its line
+
+  // Pairs each node of `copy` with the node at the same place in `parsed` (`copy` is `parsed`
+  // copied, then written over: where the two differ, nothing is paired).
+  void pair(const toml::node& copy, const toml::node& original);
 };
 
 class TableReader {
  public:
-  // `where` names the table in messages, e.g. "[camera]" or "[[body]] 'ball'".
-  TableReader(const toml::table& table, std::string file, std::string where);
+  // `where` names the table in messages, e.g. "[camera]" or "[[body]] 'ball'"; a value that
+  // `origins` holds is named by its --set argument instead of a line of `file`. `origins` (may be
+  // null) must outlive the reader.
+  TableReader(const toml::table& table, std::string file, const NodeOrigins* origins, std::string where);
+  // A reader of a table inside this one: the same file and origins.
+  TableReader child(const toml::table& table, std::string where) const { return {table, file_, origins_, std::move(where)}; }
 
   // Throws SceneError "FILE:LINE: WHERE field 'KEY': REASON" (the node's line, else the table's).
   [[noreturn]] void fail(const toml::node* node, std::string_view key, const std::string& reason) const;
@@ -63,6 +71,7 @@ class TableReader {
  private:
   const toml::table& table_;
   std::string file_;
+  const NodeOrigins* origins_;
   std::string where_;
   std::set<std::string, std::less<>> used_;
 };

@@ -8,7 +8,7 @@
 // called exactly as the student's function is, and its hint, when it fails, is in the workshop's
 // words. A case whose response crashes, loops or makes a NaN fails with that report.
 #pragma once
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "physics/outside_response.h"
 
 #include <string>

@@ -1,6 +1,6 @@
 // What the grade's cases share (grade.h): a case is a scene and a judge; the judge reads the run.
 #pragma once
-#include "demos/scene/scene_file.h"
+#include "demos/scene/scene.h"
 #include "physics/body.h"
 #include "physics/step_record.h"
 

@@ -1,5 +1,6 @@
 #include "demos/workshop/workshop_commands.h"
 
+#include "demos/command.h"
 #include "demos/program.h"
 #include "demos/scene/scene_response.h"
 #include "demos/workshop/grade.h"
@@ -11,10 +12,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 
 namespace fs = std::filesystem;
 
-namespace impulse::workshop {
+namespace impulse::demos {
+
+using namespace impulse::workshop;
 
 namespace {
 
@@ -64,7 +68,8 @@ physics::OutsideResponseMaker response_for(const std::string& file, double time_
 
 }  // namespace
 
-void add_response_options(CLI::App* command, std::vector<std::string>& settings) {
+void add_response_options(CLI::App* command, SceneArguments& arguments) {
+  std::vector<std::string>& settings = arguments.settings;
   command->add_option_function<std::string>(
              "--response", [&settings](const std::string& file) { settings.push_back("world.response=" + toml_string(file)); },
              "A C++ file defining listing 1's AddCollisionImpulse (or a .so from `impulse response -o`), run in place of "
@@ -75,32 +80,21 @@ void add_response_options(CLI::App* command, std::vector<std::string>& settings)
       ->check(CLI::Range(0.01, 600.0));
 }
 
-WorkshopCommands::WorkshopCommands(CLI::App& app) {
-  response_ = app.add_subcommand("response", "Where impulse/workshop.h is, and build and try a student's AddCollisionImpulse");
-  response_->footer(kResponseFooter);
-  response_->add_option("file", response_options_.file, "The C++ file (.cpp) with AddCollisionImpulse");
-  response_->add_flag("--include-dir", response_options_.include_directory, "Print the directory of impulse/workshop.h and stop");
-  response_->add_option("-o,--output", response_options_.output, "Also write the built shared object here (.so)");
-  response_->add_option("--time-limit", response_options_.time_limit, "Seconds the trial call may take (default 2)")
-      ->check(CLI::Range(0.01, 600.0));
+namespace {
 
-  grade_ = app.add_subcommand("grade", "Hold a student's AddCollisionImpulse to the laws: a table of cases, a hint per failure");
-  grade_->footer(kGradeFooter);
-  grade_->add_option("file", grade_options_.file, "The C++ file (.cpp or a built .so), or 'reference'")->required();
-  grade_->add_flag("--json", grade_options_.json, "The results as JSON on stdout, instead of the table");
-  grade_->add_option("--only", grade_options_.only, "One case, by its exact name (head_on_equal_e0.7, stack, ...)")
-      ->check(CLI::IsMember(case_names()));
-  grade_->add_option("--video", grade_options_.video_directory, "Write DIR/CASE.mp4 for each failed case: yours beside the reference")
-      ->type_name("DIR");
-  grade_->add_option("--time-limit", grade_options_.time_limit, "Seconds each call may take (default 2)")->check(CLI::Range(0.01, 600.0));
-}
+struct ResponseArguments {
+  std::string file, output;
+  bool include_directory = false;
+  double time_limit = kDefaultTimeLimit;
+};
 
-bool WorkshopCommands::chosen() const { return response_->parsed() || grade_->parsed(); }
+struct GradeArguments {
+  std::string file, only, video_directory;
+  bool json = false;
+  double time_limit = kDefaultTimeLimit;
+};
 
-int WorkshopCommands::run(bool progress) const { return response_->parsed() ? run_response() : run_grade(progress); }
-
-int WorkshopCommands::run_response() const {
-  const Options& options = response_options_;
+int run_response(const ResponseArguments& options) {
   if (options.include_directory) {
     std::printf("%s\n", include_directory().c_str());
     return 0;
@@ -120,27 +114,48 @@ int WorkshopCommands::run_response() const {
   const CaseResult trial = grade_case("head_on_unequal_e0.7", child_response_maker(built.shared_object, options.file, options.time_limit));
   if (!trial.failure.empty()) {
     std::fprintf(stderr, "impulse: %s\n  hint: %s\n", trial.failure.c_str(), trial.hint.c_str());
-    return demos::kExitCheckFailed;
+    return kExitCheckFailed;
   }
   std::fprintf(stderr, "%s: runs (a head-on hit: %s); `impulse grade %s` holds it to the laws\n", options.file.c_str(),
                trial.measured.c_str(), options.file.c_str());
   return 0;
 }
 
-int WorkshopCommands::run_grade(bool progress) const {
-  const Options& options = grade_options_;
+int run_grade(const GradeArguments& options, bool progress) {
   const physics::OutsideResponseMaker response = response_for(options.file, options.time_limit);
   const std::vector<CaseResult> results = grade(response, options.only);
-  if (options.json)
-    std::fputs(grade_json(options.file, results).c_str(), stdout);
-  else
-    std::fputs(grade_table(options.file, results).c_str(), stdout);
+  std::fputs((options.json ? grade_json(options.file, results) : grade_table(options.file, results)).c_str(), stdout);
+  std::fflush(stdout);
   if (!options.video_directory.empty())
     for (const std::string& video : write_failure_videos(options.video_directory, options.file, response, results, progress))
       std::fprintf(stderr, "wrote %s\n", video.c_str());
   for (const CaseResult& result : results)
-    if (!result.passed) return demos::kExitCheckFailed;
+    if (!result.passed) return kExitCheckFailed;
   return 0;
 }
 
-}  // namespace impulse::workshop
+}  // namespace
+
+void add_response_command(Commands& commands) {
+  auto arguments = std::make_shared<ResponseArguments>();
+  CLI::App* command = commands.add("response", "Where impulse/workshop.h is, and build and try a student's AddCollisionImpulse",
+                                   kResponseFooter, [arguments](const Invocation&) { return run_response(*arguments); });
+  command->add_option("file", arguments->file, "The C++ file (.cpp) with AddCollisionImpulse");
+  command->add_flag("--include-dir", arguments->include_directory, "Print the directory of impulse/workshop.h and stop");
+  command->add_option("-o,--output", arguments->output, "Also write the built shared object here (.so)");
+  command->add_option("--time-limit", arguments->time_limit, "Seconds the trial call may take (default 2)")->check(CLI::Range(0.01, 600.0));
+}
+
+void add_grade_command(Commands& commands) {
+  auto arguments = std::make_shared<GradeArguments>();
+  CLI::App* command = commands.add("grade", "Hold a student's AddCollisionImpulse to the laws: a table of cases, a hint per failure",
+                                   kGradeFooter, [arguments](const Invocation& invocation) { return run_grade(*arguments, invocation.progress); });
+  command->add_option("file", arguments->file, "The C++ file (.cpp or a built .so), or 'reference'")->required();
+  command->add_flag("--json", arguments->json, "The results as JSON on stdout, instead of the table");
+  command->add_option("--only", arguments->only, "One case, by its exact name (head_on_equal_e0.7, stack, ...)")->check(CLI::IsMember(case_names()));
+  command->add_option("--video", arguments->video_directory, "Write DIR/CASE.mp4 for each failed case: yours beside the reference")
+      ->type_name("DIR");
+  command->add_option("--time-limit", arguments->time_limit, "Seconds each call may take (default 2)")->check(CLI::Range(0.01, 600.0));
+}
+
+}  // namespace impulse::demos

@@ -11,8 +11,8 @@
 // contact points each step over the last 2 s (FOLLOW=i: body i's instead); MONITOR=1 prints the
 // fastest body, the count above 1 mm/s and the sub-steps each second from 20 s. SEED=n drops the
 // boxes from another seed (SCENES.md's is 4): one heap is one sample of a chaotic pile.
-#include "tests/bench_world.h"
-#include "tests/physics_test_scenes.h"
+#include "tests/bench/bench_world.h"
+#include "tests/physics/physics_test_scenes.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -2,8 +2,8 @@
 // response`, `impulse grade` (its table, its JSON, its videos, its exit codes), and --response on
 // render, compare and simulate, with a crash or an endless loop that ends the run cleanly.
 #include "demos/film/film.h"
-#include "tests/child_process.h"
-#include "tests/video_decode.h"
+#include "tests/support/child_process.h"
+#include "tests/support/video_decode.h"
 #include "tests/workshop/workshop_test_support.h"
 
 #include <gtest/gtest.h>

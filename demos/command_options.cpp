@@ -1,0 +1,102 @@
+#include "demos/command_options.h"
+
+#include "demos/film/moments.h"
+
+#include <exception>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace impulse::demos {
+namespace {
+
+std::vector<int> parse_frames(const std::string& list) {
+  std::vector<int> frames;
+  std::stringstream stream(list);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    try {
+      size_t used = 0;
+      const int frame = std::stoi(item, &used);
+      if (used != item.size() || frame < 0) throw std::invalid_argument(item);
+      frames.push_back(frame);
+    } catch (const std::exception&) {
+      throw std::invalid_argument("--frames wants frame numbers from 0, separated by commas (like 0,45,90), got '" + list + "'");
+    }
+  }
+  return frames;
+}
+
+}  // namespace
+
+const char* const kExitCodesHelp =
+    "\nExit codes: 0 done; 1 the scene file or the command line is wrong (nothing written); 2 a [[check]]\n"
+    "of the scene or a golden frame (verify) failed (outputs written); 3 the output cannot be written (nothing replaced, no temporary\n"
+    "left); 4 anything else failed; 130 / 143 interrupted by SIGINT / SIGTERM.";
+
+std::string examples_footer(const std::string& examples) { return "\nExamples:\n" + examples + kExitCodesHelp; }
+
+void add_scene_options(CLI::App* command, SceneArguments& arguments) {
+  command->add_option("--set", arguments.settings,
+                      "KEY=VALUE: a scene field over the file's, checked as the file's are; repeatable. "
+                      "world.friction=false, world.method=projection, body[ball].restitution=0.2, body[0].mass=2, "
+                      "video.quality=low, caption[1].text=Hello (a bare word is a string)")
+      ->type_name("KEY=VALUE");
+}
+
+void add_video_options(CLI::App* command, VideoOverrides& overrides) {
+  add_scene_options(command, overrides.scene_arguments);
+  command->add_option("--quality", overrides.quality,
+                      "Preset: low (854x480, 15 fps), medium (1280x720, 30 fps), high (1920x1080, 60 fps); "
+                      "default: the scene's [video], else medium")
+      ->check(CLI::IsMember({"low", "medium", "high"}));
+  command->add_option("--width", overrides.width, "Frame width in pixels (even), over the preset")->check(CLI::Range(16, 7680));
+  command->add_option("--height", overrides.height, "Frame height in pixels (even)")->check(CLI::Range(16, 4320));
+  command->add_option("--fps", overrides.fps, "Frames per second of video (the physics keeps its own step)")
+      ->check(CLI::Range(1, 240));
+  command->add_option("--crf", overrides.crf, "H.264 constant rate factor: 0 lossless .. 51 worst; 18-23 look clean")
+      ->check(CLI::Range(0, 51));
+  command->add_option("--x264-preset", overrides.x264_preset,
+                      "Encoder speed against file size: superfast (default), veryfast (about half the size, "
+                      "slower), ... medium")
+      ->check(CLI::IsMember({"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}));
+  command->add_option("--samples", overrides.samples, "Multisample anti-aliasing: 4 (default) or 0 for none")
+      ->check(CLI::IsMember({0, 2, 4, 8}));
+  command->add_option("--spheres", overrides.spheres,
+                      "How spheres are drawn: impostor (ray-cast, default) or tessellated (size-chosen meshes)")
+      ->check(CLI::IsMember({"impostor", "tessellated"}));
+  command->add_option("--shadows", overrides.shadows,
+                      "Shadows: ground (on the ground only, drawn as geometry; default), map (on every body too, "
+                      "from a shadow map; slower) or none")
+      ->check(CLI::IsMember({"ground", "map", "none"}));
+}
+
+void add_output_options(CLI::App* command, OutputArguments& arguments, const std::string& output_help) {
+  command->add_option("-o,--output", arguments.video_path, output_help);
+  command->add_option("--png", arguments.png_directory, "Also write frames as PNG (frame_00000.png, ...) into this directory");
+  command->add_option("--frames", arguments.frames, "With --png: only these frames, numbered from 0, e.g. 0,45,90");
+  command->add_option("--at", arguments.moments,
+                      "With --png: stills at these moments of simulated time, in seconds (t_0.500.png, ...), "
+                      "e.g. 0.5,1,2; the video's frames are then not written as PNG unless --frames says so");
+}
+
+RenderOptions output_options(const OutputArguments& arguments, const std::string& default_path) {
+  RenderOptions options;
+  options.video_path = arguments.video_path.empty() ? default_path : arguments.video_path;
+  options.png_directory = arguments.png_directory;
+  if (!arguments.frames.empty()) {
+    if (arguments.png_directory.empty()) throw std::invalid_argument("--frames chooses PNG frames: add --png DIR");
+    options.png_frames = parse_frames(arguments.frames);
+  }
+  if (!arguments.moments.empty()) {
+    if (arguments.png_directory.empty()) throw std::invalid_argument("--at chooses PNG stills: add --png DIR");
+    options.moments = parse_moments(arguments.moments, "--at");
+  }
+  if (arguments.video_path.empty()) fs::create_directories(fs::path(default_path).parent_path());
+  return options;
+}
+
+}  // namespace impulse::demos

@@ -1,0 +1,40 @@
+// The options several commands share, each added in one place: what every command that reads a
+// scene takes (--set), what every command that renders takes (--quality, --width, ...), and
+// where render and compare write (-o, --png, --frames, --at). A new option for all of them is a
+// field of SceneArguments or VideoOverrides (program.h) and a line here.
+#pragma once
+#include "demos/program.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace impulse::demos {
+
+// The exit codes, as every command's --help ends.
+extern const char* const kExitCodesHelp;
+// "\nExamples:\n" and the lines, then the exit codes: a command's --help footer.
+std::string examples_footer(const std::string& examples);
+
+// --set KEY=VALUE (repeatable): render, compare, simulate, check, verify, catalogue.
+void add_scene_options(CLI::App* command, SceneArguments& arguments);
+
+// The scene options and --quality, --width, --height, --fps, --crf, --x264-preset, --samples,
+// --spheres, --shadows: every command that renders.
+void add_video_options(CLI::App* command, VideoOverrides& overrides);
+
+// Where a rendering command writes: the video, and PNG frames or stills.
+struct OutputArguments {
+  std::string video_path;     // -o; empty: the command's default
+  std::string png_directory;  // --png
+  std::string frames;         // --frames 0,45,90
+  std::string moments;        // --at 0.5,1,2
+};
+// -o (with `output_help`), --png, --frames, --at.
+void add_output_options(CLI::App* command, OutputArguments& arguments, const std::string& output_help);
+// The render options they ask for: the video (at `default_path`, its directory made, when -o is
+// not given), the PNG frames and stills. Throws std::invalid_argument for --frames or --at
+// without --png, or a list that is not one.
+RenderOptions output_options(const OutputArguments& arguments, const std::string& default_path);
+
+}  // namespace impulse::demos

@@ -1,0 +1,126 @@
+// Comparisons (film.h): worlds stepped together share their moments and slow down for any pane's
+// impact; eq. 8's panel is filled in with the hit's numbers.
+#include "demos/film/film.h"
+#include "tests/support/scene_scratch.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <utility>
+
+namespace impulse {
+namespace {
+
+// A ball dropped from `height` m, slowed around its landing.
+std::string drop(double height) {
+  return R"(
+[scene]
+duration = 1.5
+[video]
+width = 320
+height = 180
+fps = 20
+[playback]
+slow_motion_impulse = 0.5
+slow_motion_speed = 0.2
+slow_motion_window = 0.1
+[[body]]
+shape = "plane"
+[[body]]
+name = "ball"
+shape = "sphere"
+radius = 0.2
+mass = 1.0
+restitution = 0.3
+position = [0, )" + std::to_string(height) + R"(, 0]
+)";
+}
+
+// Each ball lands at its own time; shown together, both panes slow down around both landings, so
+// the comparison has more frames than either alone, and every pane is drawn at every frame.
+TEST(Film, PanesShareTheirMomentsAndSlowDownAroundAnyPanesImpact) {
+  const auto dir = testing::scratch("film_compare_test", "moments");
+  const demos::Scene low = testing::scene_from(dir, drop(0.5));
+  const demos::Scene high = testing::scene_from(dir, drop(1.5));
+  const demos::Film low_alone({{&low, ""}}, 320, 180), high_alone({{&high, ""}}, 320, 180);
+  demos::Film together({{&low, "low"}, {&high, "high"}}, 640, 360);
+  // Landing at 0.28 s and 0.53 s: about 0.2 s of slow motion each, 0.8 s of video more than none.
+  const int plain = 30;
+  EXPECT_GT(low_alone.frame_count(), plain + 10);
+  EXPECT_GT(high_alone.frame_count(), plain + 10);
+  EXPECT_GT(together.frame_count(), low_alone.frame_count() + 10);
+  EXPECT_GT(together.frame_count(), high_alone.frame_count() + 10);
+  EXPECT_GT(together.video_time_of(1.0), high_alone.video_time_of(1.0) + 0.5);
+
+  demos::FilmPicture picture;
+  int frames = 0;
+  while (together.next_frame() < together.frame_count()) {
+    together.next(picture);
+    ASSERT_EQ(picture.panes.size(), 2u);
+    ++frames;
+  }
+  EXPECT_EQ(frames, together.frame_count());
+  // Each pane is labelled with its name inside its bottom-left corner.
+  std::map<std::string, render::Vec2f> labels;
+  for (const render::OverlayLabel& label : picture.overlay.labels) labels[label.text] = label.anchor;
+  ASSERT_EQ(labels.count("low"), 1u);
+  ASSERT_EQ(labels.count("high"), 1u);
+  for (const auto& [name, pane] : {std::pair{"low", 0}, std::pair{"high", 1}}) {
+    const Eigen::Vector2i& origin = together.layout().origins[pane];
+    EXPECT_NEAR(labels[name].x(), origin.x(), 10) << name;
+    EXPECT_NEAR(labels[name].y(), origin.y() + 0.75 * together.layout().height, together.layout().height / 4) << name;
+  }
+}
+
+// [overlay] equation = "eq8": from the impact on, a panel fills eq. 8 in with the hit's numbers,
+// the solver's impulse beside it, and the printed -(1 - e)'s, typeset (its TeX read here). 1 kg at 3 m/s onto 2 kg at rest,
+// e = 0.7: J = 1.7 * 3 / 1.5 = 3.40 N s; printed 0.3 * 3 / 1.5 = 0.60 N s.
+TEST(Film, EquationEightIsFilledInWithTheImpactsNumbers) {
+  const auto dir = testing::scratch("film_compare_test", "equation");
+  const demos::Scene scene = testing::scene_from(dir, R"(
+[scene]
+duration = 1.0
+[world]
+gravity = [0, 0, 0]
+[video]
+width = 320
+height = 180
+fps = 10
+[overlay]
+equation = "eq8"
+[playback]
+slow_motion_impulse = 1.0
+[[body]]
+name = "light"
+shape = "sphere"
+radius = 0.3
+mass = 1.0
+restitution = 0.7
+position = [-1.5, 0, 0]
+velocity = [3, 0, 0]
+[[body]]
+name = "heavy"
+shape = "sphere"
+radius = 0.3
+mass = 2.0
+position = [0.5, 0, 0]
+)");
+  demos::Film film({{&scene, ""}}, 320, 180);
+  demos::FilmPicture picture;
+  film.next(picture);
+  EXPECT_TRUE(picture.overlay.panels.empty()) << "before the impact";
+  while (film.next_frame() < film.frame_count()) film.next(picture);
+  ASSERT_EQ(picture.overlay.panels.size(), 1u);
+  const render::OverlayPanel& panel = picture.overlay.panels[0];
+  ASSERT_EQ(panel.lines.size(), 1u);
+  EXPECT_EQ(panel.lines[0].rfind("eq. 8 at t = ", 0), 0u) << panel.lines[0];
+  ASSERT_TRUE(panel.math.svg);
+  const std::string& tex = panel.math.tex;
+  EXPECT_NE(tex.find("\\frac{-(1+0.70)\\,(-3.00)}{1/1.00 + 1/2.00} = 3.40\\ \\mathrm{N\\,s}"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("\\text{solver: } 3.40"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("-(1-e)\\text{: } 0.60\\ \\mathrm{N\\,s}\\text{, too little}"), std::string::npos) << tex;
+}
+
+}  // namespace
+}  // namespace impulse

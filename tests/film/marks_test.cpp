@@ -1,0 +1,45 @@
+// Busy frames (marks.h): only the strongest pairs are marked, each pair's points as one mark.
+#include "demos/film/film.h"
+#include "demos/film/marks.h"
+#include "tests/support/scene_scratch.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+namespace impulse {
+namespace {
+
+physics::ContactRecord contact(int a, int b, double x, double impulse) {
+  physics::ContactRecord record;
+  record.body_a = a;
+  record.body_b = b;
+  record.point = physics::Vec3(x, 0, 0);
+  record.normal_impulse = impulse;
+  record.tangent_impulse = physics::Vec3(0, 0, impulse / 10);
+  return record;
+}
+
+// Busy frames: the strongest pairs only, each pair's points as one mark with their total impulse
+// at their impulse-weighted centre; a frame within the limit keeps every point.
+TEST(MarkedContacts, ABusyFrameKeepsTheStrongestPairsEachAsOneMark) {
+  const std::vector<physics::ContactRecord> contacts{
+      contact(1, 0, 0.0, 1.0), contact(1, 0, 1.0, 3.0),  // pair (1, 0): 4 N s centred at x = 0.75
+      contact(2, 0, 5.0, 0.5),                            // the weakest pair
+      contact(3, 2, 7.0, 2.0), contact(4, 3, 9.0, 6.0)};
+  EXPECT_EQ(demos::marked_contacts(contacts, 4).size(), 5u) << "four pairs: nothing to merge";
+  EXPECT_EQ(demos::marked_contacts(contacts, 0).size(), 5u) << "no limit";
+  const std::vector<physics::ContactRecord> marked = demos::marked_contacts(contacts, 3);
+  ASSERT_EQ(marked.size(), 3u);
+  EXPECT_EQ(marked[0].body_a, 1);
+  EXPECT_DOUBLE_EQ(marked[0].normal_impulse, 4.0);
+  EXPECT_DOUBLE_EQ(marked[0].point.x(), 0.75);
+  EXPECT_DOUBLE_EQ(marked[0].tangent_impulse.z(), 0.4);
+  EXPECT_EQ(marked[1].body_a, 3);
+  EXPECT_EQ(marked[2].body_a, 4);
+  EXPECT_DOUBLE_EQ(marked[2].normal_impulse, 6.0);
+}
+
+}  // namespace
+}  // namespace impulse
