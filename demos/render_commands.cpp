@@ -1,6 +1,7 @@
 // `impulse render` and `impulse compare`: a scene, or two to four side by side, into a video.
 #include "demos/command.h"
 #include "demos/command_options.h"
+#include "demos/workshop/workshop_commands.h"
 
 #include <memory>
 
@@ -46,6 +47,7 @@ void add_render_command(Commands& commands) {
   render->add_option("scene", arguments->scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
   add_output_options(render, arguments->output, "Video to write (default: out/<scene name>.mp4)");
   add_video_options(render, arguments->overrides);
+  add_response_options(render, arguments->overrides.scene_arguments);  // a student's AddCollisionImpulse
 }
 
 void add_compare_command(Commands& commands) {
@@ -64,6 +66,7 @@ void add_compare_command(Commands& commands) {
       ->type_name("KEY=VALUES");
   add_output_options(compare, arguments->output, "Video to write (default: out/<scene>_<key>.mp4, or out/<a>_vs_<b>.mp4)");
   add_video_options(compare, arguments->overrides);
+  add_response_options(compare, arguments->overrides.scene_arguments);
 }
 
 }  // namespace impulse::demos

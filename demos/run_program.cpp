@@ -33,6 +33,8 @@ int run_program(int argc, char** argv) {
   add_simulate_command(commands);
   add_check_command(commands);
   add_verify_command(commands);
+  add_response_command(commands);
+  add_grade_command(commands);
 
   try {
     app.parse(argc, argv);

@@ -1,6 +1,7 @@
 // `impulse simulate` and `impulse check`: a scene's numbers and its checks, without pictures.
 #include "demos/command.h"
 #include "demos/command_options.h"
+#include "demos/workshop/workshop_commands.h"
 #include "demos/simulate.h"
 
 #include <algorithm>
@@ -85,6 +86,7 @@ void add_simulate_command(Commands& commands) {
                       "CSV: a row per contact per step (bodies, point, normal, penetration, impulses)");
   command->add_option("--world", trace.world_path, "CSV: a row per step (energies, linear and angular momentum)");
   add_scene_options(command, arguments->scene);
+  add_response_options(command, arguments->scene);  // a student's AddCollisionImpulse
 }
 
 void add_check_command(Commands& commands) {

@@ -5,6 +5,7 @@
 // normal and the penetration now.
 #include "physics/response_method.h"
 
+#include "physics/listing_reference.h"
 #include "physics/normal_impulse.h"
 #include "physics/penalty_method.h"
 #include "physics/projection_method.h"
@@ -88,9 +89,19 @@ void World::for_each_plain_contact(Page&& page) {
 void World::solve_workshop(Real dt) {
   for_each_plain_contact([&](const Contact& contact, RigidBody& a, RigidBody& b, Real penetration, TeachingImpulse& total) {
     if (penetration < 0) return;  // the listing only sees intersecting pairs
-    const ListingOptions options{contact_material(contact.body_a, contact.body_b).restitution, settings_.contact.friction,
-                                 settings_.printed_eq8_sign};
-    const ListingImpulse applied = add_collision_impulse(a, b, contact.point, contact.normal, penetration, options);
+    if (response_) {              // a student's own AddCollisionImpulse (outside_response.h)
+      const TeachingImpulse applied = respond_outside(contact, a, b, penetration);
+      total.normal += applied.normal;
+      total.tangent1 += applied.tangent1;
+      total.tangent2 += applied.tangent2;
+      return;
+    }
+    const ContactMaterial material = contact_material(contact.body_a, contact.body_b);
+    const ListingOptions options{material.restitution, settings_.contact.friction, settings_.printed_eq8_sign};
+    const ListingImpulse applied =
+        settings_.reference_listing
+            ? reference_collision_impulse(a, b, contact.point, contact.normal, penetration, {material.restitution, material.friction, dt})
+            : add_collision_impulse(a, b, contact.point, contact.normal, penetration, options);
     total.normal += applied.normal;
     if (applied.tangent_direction.isZero(0)) return;
     Vec3 t1, t2;

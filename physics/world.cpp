@@ -12,6 +12,11 @@ World::World(WorldSettings settings) : settings_(settings) {
   if (settings_.min_substeps < 1) throw std::invalid_argument("min_substeps must be >= 1");
   if (!(settings_.stack_sink >= 0)) throw std::invalid_argument("stack_sink must be >= 0 (0: always `substeps` sub-steps)");
   if (settings_.threads < 0) throw std::invalid_argument("threads must be >= 0 (0: one per core)");
+  if (settings_.response && settings_.method != ResponseMethod::workshop)
+    throw std::invalid_argument("an outside response takes the place of listing 1's page: it needs the workshop method");
+  if (settings_.reference_listing && (settings_.method != ResponseMethod::workshop || settings_.response || settings_.printed_eq8_sign))
+    throw std::invalid_argument("the reference listing is the workshop method's page, alone: no response, no printed eq. 8");
+  if (settings_.response) response_ = settings_.response();
   substeps_ = settings_.substeps;
   team_ = std::make_unique<ThreadTeam>(settings_.threads > 0 ? settings_.threads : ThreadTeam::default_size());
 }

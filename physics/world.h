@@ -6,6 +6,7 @@
 #include "physics/contact_finder.h"
 #include "physics/island.h"
 #include "physics/materials.h"
+#include "physics/outside_response.h"
 #include "physics/joint_solver.h"
 #include "physics/contact_solver.h"
 #include "physics/response_method.h"
@@ -35,6 +36,10 @@ struct WorldSettings {
   ResponseMethod method = ResponseMethod::impulse;
   bool printed_eq8_sign = false;   // workshop method only: eq. 8/13's numerator as printed, -(1 - e),
                                    // the erratum, run to show what goes wrong (ERRATA.md)
+  bool reference_listing = false;  // workshop method only: listing 1 corrected (listing_reference.h), the
+                                   // answer a student's response is graded beside
+  OutsideResponseMaker response;   // workshop method only: a student's AddCollisionImpulse in place of
+                                   // listing 1's page (outside_response.h); empty: the page
   ContactSolverSettings contact;
   std::vector<PairMaterial> pair_materials;  // a scene's own friction and restitution for pairs of kinds (materials.h)
   PenaltySettings penalty;
@@ -95,6 +100,7 @@ class World {
   void solve_joints(Real h, bool use_bias);
   template <class Page>
   void for_each_plain_contact(Page&& page);
+  TeachingImpulse respond_outside(const Contact& contact, RigidBody& a, RigidBody& b, Real penetration);
   void load_states();
   void integrate_velocities(Real h);
   void integrate_velocity(BodyState& s, Real h) const;
@@ -120,6 +126,7 @@ class World {
   std::vector<int> anchored_;  // bodies jointed to the world: what holds their islands, for sleep
   ContactSolver contact_solver_;
   SoftStep soft_step_;
+  std::unique_ptr<OutsideResponse> response_;  // settings_.response's, for this world alone
   std::vector<TeachingImpulse> teaching_impulses_;  // per contact, this step's, for the teaching methods' records
   std::unique_ptr<ThreadTeam> team_;  // on the heap: the solver keeps its address, and World can move
   // The lowest index store_states() found not finite, or the body count. On the heap: World moves.

@@ -1,6 +1,7 @@
 // [world], [[body]] and [[joint]]: what the physics simulates.
 #include "demos/scene/rotation_degrees.h"
 #include "demos/scene/scene_overrides.h"
+#include "demos/scene/scene_response.h"
 #include "demos/scene/scene_sections.h"
 
 #include <algorithm>
@@ -95,6 +96,7 @@ void read_world(TableReader& top, Scene& scene) {
       r.fail(r.get("eq8_sign"), "eq8_sign", "only listing 1 runs eq. 8 as printed: set method = \"workshop\" too");
     w.printed_eq8_sign = true;
   }
+  read_response(r, scene);  // a student's AddCollisionImpulse (scene_response.h)
   w.contact.friction = r.boolean("friction", w.contact.friction);
   w.contact.restitution_threshold = r.number("restitution_threshold", w.contact.restitution_threshold, 0);
   w.contact.rolling_resistance = r.number("rolling_resistance", w.contact.rolling_resistance, 0, 1);

@@ -1,0 +1,204 @@
+#include "demos/workshop/response_child.h"
+
+#include "demos/workshop/respond_protocol.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+
+namespace impulse::workshop {
+
+namespace {
+
+constexpr double kLoadSeconds = 10;  // to start the process and load the shared object, over the call's limit
+
+void put(impulse_workshop_body& out, const physics::PlainBody& in) {
+  std::copy(in.centre.begin(), in.centre.end(), out.centre);
+  out.inv_mass = in.inv_mass;
+  std::copy(in.lin_velocity.begin(), in.lin_velocity.end(), out.lin_velocity);
+  std::copy(in.forces.begin(), in.forces.end(), out.forces);
+  std::copy(in.inv_inertia.begin(), in.inv_inertia.end(), out.inv_inertia);
+  std::copy(in.ang_velocity.begin(), in.ang_velocity.end(), out.ang_velocity);
+  std::copy(in.orientation.begin(), in.orientation.end(), out.orientation);
+  std::copy(in.torques.begin(), in.torques.end(), out.torques);
+  std::copy(in.world_inv_inertia.begin(), in.world_inv_inertia.end(), out.world_inv_inertia);
+  out.restitution = in.restitution;
+  out.friction = in.friction;
+}
+
+void get(physics::PlainBody& out, const impulse_workshop_body& in) {
+  std::copy(in.lin_velocity, in.lin_velocity + 3, out.lin_velocity.begin());
+  std::copy(in.ang_velocity, in.ang_velocity + 3, out.ang_velocity.begin());
+}
+
+std::string signal_meaning(int signal) {
+  switch (signal) {
+    case SIGSEGV: return "crashed (SIGSEGV, a segmentation fault: it touched memory it may not, a bad pointer or index?)";
+    case SIGBUS: return "crashed (SIGBUS, a bad memory access)";
+    case SIGFPE: return "crashed (SIGFPE, an arithmetic error: an integer divided by zero?)";
+    case SIGILL: return "crashed (SIGILL, an illegal instruction: a function that returns nothing where it should?)";
+    case SIGABRT: return "aborted (SIGABRT: an assert failed, or abort() was called; its message is above)";
+    case SIGALRM: return "did not return in time and was stopped (SIGALRM)";
+    case SIGKILL: return "was killed (SIGKILL: out of memory?)";
+  }
+  return std::string("was ended by signal ") + std::to_string(signal) + " (" + strsignal(signal) + ")";
+}
+
+std::string seconds_text(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g s", seconds);
+  return text;
+}
+
+}  // namespace
+
+std::string responder_path() {
+  if (const char* own = std::getenv("IMPULSE_RESPOND"); own != nullptr && *own != '\0') return own;
+  std::error_code error;
+  const fs::path self = fs::read_symlink("/proc/self/exe", error);
+  if (!error && fs::exists(self.parent_path() / "impulse-respond")) return (self.parent_path() / "impulse-respond").string();
+  return IMPULSE_RESPONDER;
+}
+
+ChildResponse::ChildResponse(std::string shared_object, std::string label, double time_limit)
+    : shared_object_(std::move(shared_object)), label_(std::move(label)), time_limit_(time_limit) {}
+
+ChildResponse::~ChildResponse() { stop(); }
+
+void ChildResponse::stop() {
+  if (socket_ >= 0) close(socket_);
+  socket_ = -1;
+  if (pid_ > 0) {
+    kill(pid_, SIGKILL);
+    while (waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {
+    }
+  }
+  pid_ = -1;
+}
+
+void ChildResponse::failed(const std::string& why) {
+  failure_ = label_ + ": " + why;
+  stop();
+  throw physics::ResponseFailure(failure_);
+}
+
+// After the socket closed: how the child ended.
+std::string ChildResponse::ended_how() {
+  int status = 0;
+  pid_t done;
+  while ((done = waitpid(pid_, &status, 0)) < 0 && errno == EINTR) {
+  }
+  pid_ = -1;
+  if (done < 0) return "ended (how is not known)";
+  if (WIFSIGNALED(status)) return signal_meaning(WTERMSIG(status));
+  return "ended its process with exit code " + std::to_string(WEXITSTATUS(status)) + " (exit() in the code, or a sanitizer's report above?)";
+}
+
+void ChildResponse::receive(void* data, size_t size, bool loading) {
+  const double limit = loading ? time_limit_ + kLoadSeconds : time_limit_;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limit);
+  char* bytes = static_cast<char*>(data);
+  while (size > 0) {
+    const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+    pollfd waiting{socket_, POLLIN, 0};
+    const int ready = left > 0 ? poll(&waiting, 1, int(std::ceil(left * 1000))) : 0;
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready == 0)
+      failed(std::string(loading ? "loading it" : "AddCollisionImpulse") + " did not return within " +
+             seconds_text(limit) + ": an endless loop? (the limit is --time-limit's)");
+    const ssize_t got = recv(socket_, bytes, size, 0);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) failed(std::string(loading ? "loading it: the process " : "AddCollisionImpulse ") + ended_how());
+    bytes += got;
+    size -= size_t(got);
+  }
+}
+
+void ChildResponse::start() {
+  if (!failure_.empty()) throw physics::ResponseFailure(failure_);
+  if (pid_ > 0) return;
+  int pair[2];
+  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, pair) != 0)
+    failed(std::string("cannot make a socket for it: ") + std::strerror(errno));
+  const int child_end = fcntl(pair[1], F_DUPFD_CLOEXEC, 10);  // never 3 itself: dup2 onto 3 must clear close-on-exec
+  close(pair[1]);
+  socket_ = pair[0];
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, 2, 1);
+  posix_spawn_file_actions_adddup2(&actions, child_end, kSocketDescriptor);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  // Its own process group: a Ctrl-C meant for impulse does not reach it (impulse ends it).
+  sigset_t defaults, none;
+  sigemptyset(&defaults);
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGALRM, SIGXFSZ}) sigaddset(&defaults, signal);
+  sigemptyset(&none);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setpgroup(&attributes, 0);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  const std::string program = responder_path(), seconds = std::to_string(time_limit_);
+  std::vector<char*> argv = {const_cast<char*>(program.c_str()), const_cast<char*>(shared_object_.c_str()),
+                             const_cast<char*>(seconds.c_str()), nullptr};
+  const int error = posix_spawn(&pid_, program.c_str(), &actions, &attributes, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  close(child_end);
+  if (error != 0) {
+    pid_ = -1;
+    failed("cannot start " + program + ": " + std::strerror(error));
+  }
+  ReplyMessage hello;
+  receive(&hello, sizeof hello, true);
+  if (hello.status != kReplyDone) failed(std::string(hello.message, strnlen(hello.message, sizeof hello.message)));
+}
+
+void ChildResponse::respond(physics::PlainBody& a, physics::PlainBody& b, const physics::PlainContact& contact) {
+  start();
+  CallMessage call{};
+  put(call.c0, a);
+  put(call.c1, b);
+  std::copy(contact.point.begin(), contact.point.end(), call.contact.point);
+  std::copy(contact.normal.begin(), contact.normal.end(), call.contact.normal);
+  call.contact.penetration = contact.penetration;
+  call.contact.time_step = contact.time_step;
+  const char* bytes = reinterpret_cast<const char*>(&call);
+  for (size_t size = sizeof call; size > 0;) {
+    const ssize_t sent = send(socket_, bytes, size, MSG_NOSIGNAL);
+    if (sent < 0 && errno == EINTR) continue;
+    if (sent <= 0) failed("AddCollisionImpulse " + ended_how());
+    bytes += sent;
+    size -= size_t(sent);
+  }
+  ReplyMessage reply;
+  receive(&reply, sizeof reply, false);
+  if (reply.status != kReplyDone) failed(std::string(reply.message, strnlen(reply.message, sizeof reply.message)));
+  get(a, reply.c0);
+  get(b, reply.c1);
+}
+
+physics::OutsideResponseMaker child_response_maker(const std::string& shared_object, const std::string& label, double time_limit) {
+  return [=] { return std::make_unique<ChildResponse>(shared_object, label, time_limit); };
+}
+
+}  // namespace impulse::workshop
