@@ -21,7 +21,8 @@ execute_process(COMMAND ${CXX} ${flags} ${WORK}/forbidden.cpp RESULT_VARIABLE re
 if(result EQUAL 0)
   message(FATAL_ERROR "${FORBIDDEN} compiles with the room's include directories (${directories}): the rooms are not apart")
 endif()
-if(NOT error MATCHES "${FORBIDDEN}: No such file or directory")
+# GCC says "No such file or directory", clang "'HEADER' file not found".
+if(NOT error MATCHES "${FORBIDDEN}: No such file or directory" AND NOT error MATCHES "'${FORBIDDEN}' file not found")
   message(FATAL_ERROR "${FORBIDDEN} fails for another reason than not being found:\n${error}")
 endif()
 message(STATUS "${FORBIDDEN} is not found from the room of ${ALLOWED}, as it should be")
