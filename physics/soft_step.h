@@ -50,7 +50,11 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
                        IntegrateVelocity&& integrate_velocity, IntegratePosition&& integrate_position) {
   SweepSchedule& schedule = contacts.schedule();
   ThreadTeam& team = contacts.team();
+  // One epoch per sweep, increasing in the order the sweeps run: a place waits for another
+  // thread's counter to reach its sweep's epoch, so a sweep numbered below one already run would
+  // not wait at all (warm start, solve, the impact passes, take back, relax).
   const uint64_t epoch = schedule.new_epochs(4 + kImpactPasses);
+  const uint64_t first_pass = epoch + 2, take_back = first_pass + kImpactPasses, relax = take_back + 1;
   const bool parallel = schedule.parallel();
   auto meet = [&] { if (parallel) team.barrier(); };
   // The joints are solved by the first thread alone, between the contacts' sweeps.
@@ -83,7 +87,7 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
     // relax pass's inelastic rows. Each pass keeps momentum, angular momentum, and with e = 1 the
     // energy; passes beyond kImpactPasses are left to the rows.
     bool any_bounced = bounced_in(epoch + 1);
-    for (uint64_t pass = epoch + 4, last = epoch + 1; bounced_in(last) && pass < epoch + 4 + kImpactPasses; last = pass++) {
+    for (uint64_t pass = first_pass, last = epoch + 1; bounced_in(last) && pass < take_back; last = pass++) {
       bounced = false;
       schedule.sweep_share(thread, pass, [&](int place, int width) { bounced |= contacts.bounce_manifolds(place, width, bodies, h); });
       if (bounced) bounce_flag(thread, pass).store(pass, std::memory_order_relaxed);
@@ -95,11 +99,11 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
     // Most sub-steps nothing bounces (resting piles): then no sweep to take shifts back. The
     // barriers order the flags; every thread reads the same and takes the same way.
     if (any_bounced) {
-      schedule.sweep_share(thread, epoch + 2, [&](int place, int width) { contacts.take_back_bounce_shifts(place, width, bodies.states); });
+      schedule.sweep_share(thread, take_back, [&](int place, int width) { contacts.take_back_bounce_shifts(place, width, bodies.states); });
       meet();
     }
     joint_stage(thread, [&] { joints->solve(bodies, 1 / h, false); });
-    schedule.sweep_share(thread, epoch + 3, [&](int place, int width) {
+    schedule.sweep_share(thread, relax, [&](int place, int width) {
       contacts.solve_manifolds(place, width, bodies, 1 / h, false);
       contacts.add_to_totals(place);  // the relax pass is the sub-step's last word on them
     });
