@@ -1,6 +1,8 @@
 #include "demos/simulate.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -46,67 +48,86 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-}  // namespace
+// The CSV files of `impulse simulate`: each row as "%.9g" of the double the world holds.
+class CsvSink : public TraceSink {
+ public:
+  explicit CsvSink(const TraceOptions& options)
+      : bodies_(open_csv(options.bodies_path,
+                         "time_s,step,body,x_m,y_m,z_m,qw,qx,qy,qz,vx_m_per_s,vy_m_per_s,vz_m_per_s,wx_rad_per_s,"
+                         "wy_rad_per_s,wz_rad_per_s\n")),
+        contacts_(open_csv(options.contacts_path,
+                           "time_s,step,body_a,body_b,x_m,y_m,z_m,nx,ny,nz,penetration_m,normal_impulse_N_s,friction_x_N_s,"
+                           "friction_y_N_s,friction_z_N_s\n")),
+        world_(open_csv(options.world_path,
+                        "time_s,step,kinetic_energy_J,potential_energy_J,px_kg_m_per_s,py_kg_m_per_s,pz_kg_m_per_s,"
+                        "Lx_kg_m2_per_s,Ly_kg_m2_per_s,Lz_kg_m2_per_s\n")) {}
 
-long simulate_scene(const Scene& scene, const TraceOptions& options, std::vector<CheckResult>* checks) {
-  std::optional<CsvFile> bodies = open_csv(
-      options.bodies_path,
-      "time_s,step,body,x_m,y_m,z_m,qw,qx,qy,qz,vx_m_per_s,vy_m_per_s,vz_m_per_s,wx_rad_per_s,wy_rad_per_s,wz_rad_per_s\n");
-  std::optional<CsvFile> contacts = open_csv(
-      options.contacts_path,
-      "time_s,step,body_a,body_b,x_m,y_m,z_m,nx,ny,nz,penetration_m,normal_impulse_N_s,friction_x_N_s,friction_y_N_s,"
-      "friction_z_N_s\n");
-  std::optional<CsvFile> world_csv = open_csv(
-      options.world_path,
-      "time_s,step,kinetic_energy_J,potential_energy_J,px_kg_m_per_s,py_kg_m_per_s,pz_kg_m_per_s,Lx_kg_m2_per_s,"
-      "Ly_kg_m2_per_s,Lz_kg_m2_per_s\n");
-
-  physics::World world = build_world(scene);
-  CheckWatch watch(scene.checks);
-  watch.start(world);
-  const double duration = options.duration >= 0 ? options.duration : scene.duration;
-  const int every = std::max(options.every, 1);
-  auto name_of = [&](int body) { return body >= 0 ? quoted(world.bodies()[body].name) : std::string("world"); };
-  // The rows of the world as it is now: the starting state at step 0 (no contacts: none has been
-  // looked for), then after each step kept.
-  auto write_rows = [&](long step) {
+  void rows(long step, const physics::World& world) override {
     const physics::StepRecord& record = world.record();
     const double t = record.time;
-    if (bodies) {
+    auto name_of = [&](int body) { return body >= 0 ? quoted(world.bodies()[body].name) : std::string("world"); };
+    if (bodies_) {
       for (const physics::Body& b : world.bodies()) {
-        std::fprintf(bodies->get(), "%.9g,%ld,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
+        std::fprintf(bodies_->get(), "%.9g,%ld,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
                      step, quoted(b.name).c_str(), b.position.x(), b.position.y(), b.position.z(), b.orientation.w(),
                      b.orientation.x(), b.orientation.y(), b.orientation.z(), b.velocity.x(), b.velocity.y(),
                      b.velocity.z(), b.angular_velocity.x(), b.angular_velocity.y(), b.angular_velocity.z());
       }
     }
-    if (contacts && step > 0) {
+    if (contacts_ && step > 0) {
       for (const physics::ContactRecord& c : record.contacts) {
-        std::fprintf(contacts->get(), "%.9g,%ld,%s,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t, step,
+        std::fprintf(contacts_->get(), "%.9g,%ld,%s,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t, step,
                      name_of(c.body_a).c_str(), name_of(c.body_b).c_str(), c.point.x(), c.point.y(), c.point.z(),
                      c.normal.x(), c.normal.y(), c.normal.z(), c.penetration, c.normal_impulse, c.tangent_impulse.x(),
                      c.tangent_impulse.y(), c.tangent_impulse.z());
       }
     }
-    if (world_csv) {
-      std::fprintf(world_csv->get(), "%.9g,%ld,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t, step,
-                   record.kinetic_energy, record.potential_energy, record.linear_momentum.x(),
-                   record.linear_momentum.y(), record.linear_momentum.z(), record.angular_momentum.x(),
-                   record.angular_momentum.y(), record.angular_momentum.z());
+    if (world_) {
+      std::fprintf(world_->get(), "%.9g,%ld,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t, step, record.kinetic_energy,
+                   record.potential_energy, record.linear_momentum.x(), record.linear_momentum.y(),
+                   record.linear_momentum.z(), record.angular_momentum.x(), record.angular_momentum.y(),
+                   record.angular_momentum.z());
     }
-  };
-  write_rows(0);
+  }
+
+  void commit() {
+    for (std::optional<CsvFile>* file : {&bodies_, &contacts_, &world_})
+      if (*file) (*file)->commit();
+  }
+
+ private:
+  std::optional<CsvFile> bodies_, contacts_, world_;
+};
+
+}  // namespace
+
+long trace_scene(const Scene& scene, double duration, int every, TraceSink& sink, std::vector<CheckResult>* checks,
+                 const std::function<void(long done, long total)>& progress) {
+  physics::World world = build_world(scene);
+  CheckWatch watch(scene.checks);
+  watch.start(world);
+  if (duration < 0) duration = scene.duration;
+  every = std::max(every, 1);
+  const double dt = scene.world.time_step;
+  const long total = std::max(0L, long(std::ceil(duration / dt - 0.5)));
+  sink.rows(0, world);
   long steps = 0;
-  while (world.time() < duration - 0.5 * scene.world.time_step) {
+  while (world.time() < duration - 0.5 * dt) {
     world.step();
     watch.step(world);
     ++steps;
-    const bool last = !(world.time() < duration - 0.5 * scene.world.time_step);
-    if (steps % every == 0 || last) write_rows(steps);
+    const bool last = !(world.time() < duration - 0.5 * dt);
+    if (steps % every == 0 || last) sink.rows(steps, world);
+    if (progress) progress(steps, std::max(total, steps));
   }
-  for (std::optional<CsvFile>* file : {&bodies, &contacts, &world_csv})
-    if (*file) (*file)->commit();
   if (checks) *checks = watch.results();
+  return steps;
+}
+
+long simulate_scene(const Scene& scene, const TraceOptions& options, std::vector<CheckResult>* checks) {
+  CsvSink sink(options);
+  const long steps = trace_scene(scene, options.duration, options.every, sink, checks);
+  sink.commit();
   return steps;
 }
 

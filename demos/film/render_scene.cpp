@@ -255,6 +255,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
     if (options.progress) options.progress(frames_finished, film.picture_count());
   }
   pipeline.finish();
+  if (options.progress) options.progress(film.picture_count(), film.picture_count());  // every frame finished
   if (encoder) encoder->finish();
   if (encoder && !scene.captions.empty()) write_captions(scene, film, captions_path(options.video_path));
   if (encoder) write_chapters(scene, film, chapters_path(options.video_path));

@@ -88,7 +88,7 @@ std::vector<Scene> load_variants(const SceneFile& file, const std::vector<std::s
     try {
       scenes.push_back(file.scene(pane_settings));
     } catch (const SceneError& error) {
-      throw SceneError(compare.origin + " value " + std::to_string(i + 1) + ": " + error.what());
+      throw SceneError(compare.origin + " value " + std::to_string(i + 1) + ": " + error.what(), error.place());
     }
     Scene& scene = scenes.back();
     scene.compare = CompareSpec{};

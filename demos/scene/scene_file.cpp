@@ -45,9 +45,11 @@ SceneFile::SceneFile(std::string path) : path_(std::move(path)) {
     std::ostringstream message;
     message << path_ << ':' << error.source().begin.line << ": " << error.description();
     if (error.description().find("utf-8") != std::string_view::npos) message << " (save the file as UTF-8)";
-    throw SceneError(message.str());
+    throw SceneError(message.str(), ScenePlace{path_, int(error.source().begin.line), "", "", ""});
   }
 }
+
+SceneFile::SceneFile(toml::table root, std::string name) : path_(std::move(name)), root_(std::move(root)) {}
 
 Scene SceneFile::scene(const std::vector<std::string>& settings) const {
   // The settings write into a copy: the one parse serves every scene read from the file (each
@@ -77,7 +79,9 @@ Scene SceneFile::scene(const std::vector<std::string>& settings) const {
   read_compare(top, scene);
   read_checks(top, scene);
   top.finish();
-  if (scene.bodies.empty()) throw SceneError(path_ + ":1: scene: no bodies; add at least one [[body]] table");
+  if (scene.bodies.empty())
+    throw SceneError(path_ + ": scene: no bodies; add at least one [[body]] table (or a [[pyramid]] or [[lattice]])",
+                     ScenePlace{path_, 0, "", "", ""});
   return scene;
 }
 

@@ -18,6 +18,9 @@ class SceneFile {
   // Reads and parses the file. Throws SceneError when it cannot: missing, a directory, too large,
   // not text, not TOML (with its line).
   explicit SceneFile(std::string path);
+  // Tables built in memory (Python's dicts, demos/python/), as the file's would be parsed; `name`
+  // stands for the file in messages, and relative paths in it are the current directory's.
+  SceneFile(toml::table root, std::string name);
 
   const std::string& path() const { return path_; }
   // The scene with `settings` (--set KEY=VALUE) over the file. Throws SceneError naming the file,

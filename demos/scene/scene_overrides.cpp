@@ -23,7 +23,9 @@ std::string shown(const std::string& argument) {
 }
 
 [[noreturn]] void refuse(const std::string& argument, const std::string& reason) {
-  throw SceneError("--set " + shown(argument) + ": " + reason);
+  ScenePlace place;
+  place.setting = argument;
+  throw SceneError("--set " + shown(argument) + ": " + reason, place);
 }
 
 size_t edit_distance(const std::string& a, const std::string& b) {

@@ -26,22 +26,43 @@ TableReader::TableReader(const toml::table& table, std::string file, const NodeO
     : table_(table), file_(std::move(file)), origins_(origins), where_(std::move(where)) {}
 
 void TableReader::fail(const toml::node* node, std::string_view key, const std::string& reason) const {
-  throw SceneError(where(node, key) + ": " + reason);
+  throw SceneError(where(node, key) + ": " + reason, place(node, key));
+}
+
+// The node shown for `node` (the table's when null): the parsed one, which has the line.
+const toml::node& TableReader::shown(const toml::node* node) const {
+  const toml::node* shown = node ? node : &table_;
+  if (origins_)
+    if (const auto found = origins_->parsed.find(shown); found != origins_->parsed.end()) shown = found->second;
+  return *shown;
+}
+
+// The --set argument that wrote `node`, or null.
+const std::string* TableReader::set_by(const toml::node* node) const {
+  if (!origins_ || !node) return nullptr;
+  const auto found = origins_->arguments.find(node);
+  return found != origins_->arguments.end() ? &found->second : nullptr;
+}
+
+ScenePlace TableReader::place(const toml::node* node, std::string_view key) const {
+  ScenePlace place{file_, int(shown(node).source().begin.line), where_, std::string(key), ""};
+  if (const std::string* argument = set_by(node)) {
+    place.setting = argument->substr(argument->rfind("--set ", 0) == 0 ? 6 : 0);
+    place.line = 0;
+  }
+  return place;
 }
 
 std::string TableReader::where(const toml::node* node, std::string_view key) const {
-  const toml::node* shown = node ? node : &table_;
   std::ostringstream message;
-  // A value given on the command line is named by its --set argument, not by a line of the file.
-  const std::string* set_by = nullptr;
-  if (origins_ && node)
-    if (const auto found = origins_->arguments.find(node); found != origins_->arguments.end()) set_by = &found->second;
-  if (origins_)
-    if (const auto found = origins_->parsed.find(shown); found != origins_->parsed.end()) shown = found->second;
-  if (set_by)
-    message << *set_by << ": " << where_;
+  // A value given on the command line is named by its --set argument, not by a line of the file;
+  // tables built in memory (Python's dicts) have no lines.
+  if (const std::string* argument = set_by(node))
+    message << *argument << ": " << where_;
+  else if (const int line = int(shown(node).source().begin.line); line > 0)
+    message << file_ << ':' << line << ": " << where_;
   else
-    message << file_ << ':' << shown->source().begin.line << ": " << where_;
+    message << file_ << ": " << where_;
   if (!key.empty()) message << " field '" << key << "'";
   return message.str();
 }

@@ -1,6 +1,7 @@
 // Reads one TOML table of a scene file, checking each field's type and range. finish() refuses
 // any key it was never asked for, so a typo is never silently ignored.
 #pragma once
+#include "demos/scene/scene_error.h"
 #include "demos/scene/scene_overrides.h"
 #include "demos/scene/view_options.h"
 #include "physics/math.h"
@@ -42,6 +43,8 @@ class TableReader {
   [[noreturn]] void fail(const toml::node* node, std::string_view key, const std::string& reason) const;
   // What fail() writes before ": REASON", for a message made later (e.g. about a field's LaTeX).
   std::string where(const toml::node* node, std::string_view key) const;
+  // The same in parts (scene_error.h).
+  ScenePlace place(const toml::node* node, std::string_view key) const;
 
   const toml::node* get(std::string_view key);  // marks the key as known; null when absent
   bool has(std::string_view key) const { return table_.contains(key); }  // without marking it
@@ -69,6 +72,9 @@ class TableReader {
   void finish() const;  // call last
 
  private:
+  const toml::node& shown(const toml::node* node) const;
+  const std::string* set_by(const toml::node* node) const;
+
   const toml::table& table_;
   std::string file_;
   const NodeOrigins* origins_;
