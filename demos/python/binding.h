@@ -40,6 +40,9 @@ class PythonProgress {
   std::chrono::steady_clock::time_point last_{};
 };
 
+// A scene's [[check]] results as a list of dicts: check, passed, measured.
+py::list check_list(const std::vector<demos::CheckResult>& results);
+
 // Sets a Python function of listing 1's arguments as the world's response (workshop method).
 void set_python_response(demos::Scene& scene, const py::object& function);
 

@@ -25,17 +25,7 @@ py::dict written(const demos::RenderOptions& options, const std::vector<std::vec
   result["captions"] = if_there(demos::captions_path(options.video_path));
   result["chapters"] = if_there(demos::chapters_path(options.video_path));
   py::list checks;
-  for (const std::vector<demos::CheckResult>& pane : panes) {
-    py::list list;
-    for (const demos::CheckResult& check : pane) {
-      py::dict item;
-      item["check"] = check.text;
-      item["passed"] = check.passed;
-      item["measured"] = check.measured;
-      list.append(item);
-    }
-    checks.append(list);
-  }
+  for (const std::vector<demos::CheckResult>& pane : panes) checks.append(check_list(pane));
   result["checks"] = checks;
   return result;
 }

@@ -18,6 +18,18 @@ void PythonProgress::operator()(long done, long total) {
   if (!callback_.is_none()) callback_(done, total);
 }
 
+py::list check_list(const std::vector<demos::CheckResult>& results) {
+  py::list list;
+  for (const demos::CheckResult& check : results) {
+    py::dict item;
+    item["check"] = check.text;
+    item["passed"] = check.passed;
+    item["measured"] = check.measured;
+    list.append(item);
+  }
+  return list;
+}
+
 }  // namespace impulse::python
 
 PYBIND11_MODULE(_impulse, module) {

@@ -98,15 +98,7 @@ void add_trace_bindings(py::module_& module) {
         trace["contact_a"] = to_array(std::move(sink.contact_a), {contact_count});
         trace["contact_b"] = to_array(std::move(sink.contact_b), {contact_count});
         trace["contact_values"] = to_array(std::move(sink.contact_values), {contact_count, 11});
-        py::list results;
-        for (const demos::CheckResult& check : checks) {
-          py::dict result;
-          result["check"] = check.text;
-          result["passed"] = check.passed;
-          result["measured"] = check.measured;
-          results.append(result);
-        }
-        trace["checks"] = results;
+        trace["checks"] = check_list(checks);
         return trace;
       },
       py::arg("scene"), py::arg("duration") = -1.0, py::arg("every") = 1, py::arg("contacts") = true,
