@@ -1,6 +1,6 @@
 // [[equation]]: LaTeX mathematics shown from `start` to `end` seconds of simulated time, in a
 // corner of the frame, with live values of the latest impact that slows the video filled in
-// (README.md, "Scene files"). The scene only reads it; the film typesets it (demos/film/
+// (docs/scene_files.md). The scene only reads it; the film typesets it (demos/film/
 // live_equations.h), and a LaTeX error is reported with `origin`, the file and line of its `tex`.
 #pragma once
 #include <string>

@@ -1,6 +1,6 @@
 // A scene as a lecturer writes it in a scene file (TOML): the world, its bodies, the camera, the
 // video, what frames show, captions, equations, checks and comparison. Plain data; the loader is
-// scene_file.h, the format README.md's "Scene files".
+// scene_file.h, the format docs/scene_files.md.
 #pragma once
 #include "demos/scene/equation_cue.h"
 #include "demos/scene/scene_checks.h"

@@ -1,7 +1,7 @@
 // Scene files (TOML) read into scenes (scene.h). A file is read and parsed once; each scene read
 // from it (the file's own, and each pane of a comparison: scene_compare.h) is a copy of the
 // parsed tables with its --set arguments written over them (scene_overrides.h), then checked
-// field by field. The format is described in README.md, "Scene files".
+// field by field. The format is described in docs/scene_files.md.
 #pragma once
 #include "demos/scene/scene.h"
 #include "demos/scene/scene_error.h"

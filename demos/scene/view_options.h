@@ -1,4 +1,4 @@
-// What a scene file asks the video to show beyond the bodies (README.md, "Scene files"):
+// What a scene file asks the video to show beyond the bodies (docs/scene_files.md):
 // captions with time cues, the 2D overlay, camera motion, playback speed and slow motion.
 #pragma once
 #include <Eigen/Core>
