@@ -108,3 +108,38 @@ def test_ctrl_c_stops_a_render_and_leaves_nothing_behind(tmp_path, root):
     assert child.wait(timeout=60) == 7, rest
     assert rest == "interrupted\n"
     assert os.listdir(out) == []  # no video, no .part file, no poster
+
+
+def test_interrupting_the_kernel_stops_a_render_in_a_notebook(tmp_path, root):
+    # Jupyter's "interrupt" on a real kernel (jupyter_client, as the notebook's page does it).
+    jupyter_client = pytest.importorskip("jupyter_client")
+    out = tmp_path / "out"
+    out.mkdir()
+    manager = jupyter_client.KernelManager(kernel_name="python3")
+    manager.start_kernel(cwd=root, env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
+    client = manager.client()
+    client.start_channels()
+    try:
+        client.wait_for_ready(timeout=60)
+        code = ("import impulse\n"
+                "seen = []\n"
+                "def progress(done, total):\n"
+                "    if not seen: seen.append(done); print('drawing', flush=True)\n"
+                f"impulse.load('assets/scenes/bounce.toml').render({str(out / 'bounce.mp4')!r}, quality='medium', "
+                "progress=progress)\n")
+        request = client.execute(code)
+        while True:  # until the frames are being drawn
+            message = client.get_iopub_msg(timeout=120)
+            if message["msg_type"] == "stream" and "drawing" in message["content"]["text"]:
+                break
+        time.sleep(0.3)
+        manager.interrupt_kernel()
+        reply = client.get_shell_msg(timeout=60)
+        while reply["parent_header"].get("msg_id") != request:
+            reply = client.get_shell_msg(timeout=60)
+        assert reply["content"]["status"] == "error"
+        assert reply["content"]["ename"] == "KeyboardInterrupt"
+        assert os.listdir(out) == []
+    finally:
+        client.stop_channels()
+        manager.shutdown_kernel(now=True)
