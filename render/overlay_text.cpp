@@ -35,25 +35,6 @@ void legend_arrow(cairo_t* cr, double x0, double y, double length, double scale,
   cairo_fill(cr);
 }
 
-// Whether the segment from a to b meets the rectangle [x0, x1] x [y0, y1] (Liang-Barsky clipping).
-bool segment_meets(const Vec2f& a, const Vec2f& b, double x0, double y0, double x1, double y1) {
-  double enter = 0, leave = 1;
-  const double d[2] = {double(b.x() - a.x()), double(b.y() - a.y())};
-  const double p[4] = {-d[0], d[0], -d[1], d[1]};
-  const double q[4] = {a.x() - x0, x1 - a.x(), a.y() - y0, y1 - a.y()};
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0) {
-      if (q[i] < 0) return false;
-      continue;
-    }
-    const double t = q[i] / p[i];
-    if (p[i] < 0) enter = std::max(enter, t);
-    else leave = std::min(leave, t);
-    if (enter > leave) return false;
-  }
-  return true;
-}
-
 // Splits a word wider than `max_width` between characters (UTF-8 sequences kept whole) into
 // pieces that fit, each at least one character.
 std::vector<std::string> split_word(cairo_t* cr, const std::string& word, double max_width) {

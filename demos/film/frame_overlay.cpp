@@ -1,5 +1,6 @@
 #include "demos/film/frame_overlay.h"
 
+#include "demos/film/body_boxes.h"
 #include "demos/film/captions.h"
 #include "demos/film/impulse_label.h"
 
@@ -97,6 +98,9 @@ void FrameOverlay::make(const FrameState& state, const PlotRecorder& plots, rend
   } else {
     overlay.plots.clear();
   }
+  overlay.bodies.clear();
+  add_body_boxes(*state.bodies, *state.poses, view, overlay.bodies);
+  overlay.body_paths = body_paths_;
 }
 
 }  // namespace impulse::demos
