@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -45,11 +46,17 @@ struct PixelRect {
 // What kind of element a part is; its index says which caption, pane, plot, panel or label.
 enum class PartKind { title, clock, caption, pane_label, legend, plot, panel, label };
 
-// One way to draw a part: its letters and boxes at `k` times their designed size, its text in
-// these lines (a title or caption wrapped to a width).
+// Text wrapped to a width in a font, and its widest line's width.
+struct WrappedText {
+  std::vector<std::string> lines;
+  double width = 0;
+};
+
+// One way to draw a part: its letters and boxes at `k` times their designed size, its text (a
+// title's or caption's) wrapped to a width.
 struct PartForm {
   double k = 1;
-  std::vector<std::string> lines;
+  const WrappedText* text = nullptr;
 };
 
 struct OverlayPart {
@@ -74,6 +81,10 @@ struct OverlayPainter::Cairo {
   LayoutGround ground;
   OverlayLayout layout;
   PaintedLayout result;
+  // Titles and captions as wrapped, kept from frame to frame (they stay the same for many
+  // frames); forgotten, between frames, when many are kept.
+  std::unordered_map<std::string, WrappedText> wrap_cache;
+  const WrappedText& wrapped(const std::string& text, double size, bool bold, double max_width);
 
   void mark(double x, double y, double w, double h) {
     const int margin = 2 + static_cast<int>(4 * scale);  // anti-aliased edges and text halos
@@ -90,6 +101,7 @@ struct OverlayPainter::Cairo {
   ScreenBox inner_frame(double edge) const;  // the frame without `edge` pixels round it
   // A new part and its request, to be filled by the add_ functions.
   std::pair<OverlayPart&, LayoutRequest&> add_part(PartKind kind, int index);
+  int part_index(PartKind kind, int index) const;  // of a part added before; -1: none
 
   // Each measures its part in each of its forms and says where it would go (overlay_parts.cpp,
   // overlay_plots.cpp), in the order the layout places them.

@@ -9,7 +9,7 @@ namespace {
 
 constexpr float kSlop = 1e-3f;          // pixels: boxes that only touch, up to rounding, do not overlap
 constexpr float kPaneWeight = 8;        // a pane's cell covered costs this many cells' widths of moving
-constexpr float kPathWeight = 8;        // a cell some body passes through: as bad as a pane's
+constexpr float kPathWeight = 2;        // a cell some body passes through
 constexpr float kStillWeight = 2;       // a still body's cell
 constexpr int kSegmentWeight = 8;       // an avoided line crossed counts as this many body cells
 constexpr int kCellsAcross = 48;        // the grid has this many cells along the frame's shorter side
@@ -196,44 +196,42 @@ std::optional<ScreenBox> OverlayLayout::last_place(const LayoutRequest& request,
 // At the first size with a place free of bodies: where it was last frame, if that still covers
 // nothing (no body, pane, path or line: text being read does not move); else the first of its
 // spots that covers nothing; else where it was, if that covers no body; else the cheapest of its
-// spots and the search's places. With no such size, the place covering fewest
-// bodies (the earlier size on a tie), or where it was unless moving halves what it covers: an
-// element with no free place does not hop from frame to frame.
-Placement OverlayLayout::place_one(const LayoutRequest& request) {
+// spots and the search's places. With no such size, the size and place covering fewest bodies
+// (the earlier size on a tie), where it was or at its best spot unless moving halves what it
+// covers: an element with no free place does not hop from frame to frame.
+Placement OverlayLayout::place_one(const LayoutRequest& request, const std::optional<Spot>& under) {
   const ScreenBox frame{0, 0, float(width_), float(height_)};
   const ScreenBox bounds = request.bounds.w > 0 ? intersection(request.bounds, frame) : frame;
   Placement best;
   for (size_t s = 0; s < request.sizes.size() && !request.spots.empty(); ++s) {
     const Vec2f& size = request.sizes[s];
     if (!(size.x() >= 0 && size.y() >= 0) || size.x() > bounds.w + kSlop || size.y() > bounds.h + kSlop) continue;
-    const ScreenBox first = clamped(box_at(request.spots.front(), size), bounds);
-    Candidate chosen;
-    bool found = false;
-    auto consider = [&](const Candidate& candidate) {
-      if (!found || candidate.hard < chosen.hard || (candidate.hard == chosen.hard && candidate.soft < chosen.soft)) {
-        chosen = candidate;
-        found = true;
-      }
+    const ScreenBox first = clamped(box_at(under ? *under : request.spots.front(), size), bounds);
+    const auto cheaper = [](const std::optional<Candidate>& a, const std::optional<Candidate>& b) {
+      if (!a || !b) return a ? a : b;
+      return a->hard < b->hard || (a->hard == b->hard && a->soft <= b->soft) ? a : b;
     };
     const std::optional<ScreenBox> last = last_place(request, int(s), bounds);
     const std::optional<Candidate> kept = last ? std::optional(cost(request, *last, first)) : std::nullopt;
     if (kept && kept->hard == 0 && kept->cover < kSlop) return {int(s), kept->box, 0};
-    for (const Spot& spot : request.spots) {
-      const ScreenBox box = clamped(box_at(spot, size), bounds);
+    std::optional<Candidate> spotted;  // the cheapest spot
+    for (int k = under ? -1 : 0; k < int(request.spots.size()); ++k) {
+      const ScreenBox box = clamped(box_at(k < 0 ? *under : request.spots[k], size), bounds);
       if (!free_of_elements(box)) continue;
       const Candidate candidate = cost(request, box, first);
       if (candidate.hard == 0 && candidate.cover < kSlop) return {int(s), box, 0};
-      consider(candidate);
+      spotted = cheaper(spotted, candidate);
     }
     if (kept && kept->hard == 0) return {int(s), kept->box, 0};
-    Candidate searched;
-    if (search(request, size, bounds, first, searched)) consider(searched);
-    if (found && chosen.hard == 0) return {int(s), chosen.box, 0};
-    if (kept && (!found || kept->hard <= 2 * chosen.hard)) {  // moves only to cover half as much
-      chosen = *kept;
-      found = true;
-    }
-    if (found && (best.size < 0 || chosen.hard < best.covered)) best = {int(s), chosen.box, chosen.hard};
+    std::optional<Candidate> searched;
+    if (Candidate found; search(request, size, bounds, first, found)) searched = found;
+    const std::optional<Candidate> cheapest = cheaper(spotted, searched);
+    if (cheapest && cheapest->hard == 0) return {int(s), cheapest->box, 0};
+    // Over bodies wherever it goes: it stays where it was (or at its best spot) unless moving
+    // halves what it covers.
+    std::optional<Candidate> chosen = kept ? kept : spotted;
+    if (!chosen || (cheapest && 2 * cheapest->hard < chosen->hard)) chosen = cheapest;
+    if (chosen && (best.size < 0 || chosen->hard < best.covered)) best = {int(s), chosen->box, chosen->hard};
   }
   return best;
 }
@@ -243,7 +241,14 @@ const std::vector<Placement>& OverlayLayout::place(const LayoutGround& ground, c
   placed_.clear();
   placements_.clear();
   for (const LayoutRequest& request : requests) {
-    const Placement placement = place_one(request);
+    std::optional<Spot> under;
+    if (request.under >= 0 && request.under < int(placements_.size()) && placements_[request.under].size >= 0 &&
+        !request.spots.empty()) {
+      const ScreenBox& above = placements_[request.under].box;
+      const float align = request.spots.front().align.x();
+      under = Spot{Vec2f(above.x + align * above.w, above.bottom() + gap_), Vec2f(align, 0)};
+    }
+    const Placement placement = place_one(request, under);
     placements_.push_back(placement);
     if (placement.size >= 0) placed_.push_back(placement.box);
   }

@@ -49,6 +49,9 @@ struct LayoutRequest {
   // The same element has the same key from frame to frame (-1: none): a lasting element whose
   // first spot is taken stays where it was while that covers no body, rather than hop about.
   int key = -1;
+  // An earlier request it goes under when it can (-1: none), e.g. the second plot of a column under
+  // the first wherever that went: its first spot is then just under that element's box.
+  int under = -1;
 };
 
 // What the elements go over.
@@ -82,7 +85,7 @@ class OverlayLayout {
     float soft = 0;     // distance from the first spot, plus a cell's width per unit of cover
   };
   void fill_grids(const LayoutGround& ground);
-  Placement place_one(const LayoutRequest& request);
+  Placement place_one(const LayoutRequest& request, const std::optional<Spot>& under);
   bool free_of_elements(const ScreenBox& box) const;
   Candidate cost(const LayoutRequest& request, const ScreenBox& box, const ScreenBox& first) const;
   float distance(const LayoutRequest& request, const ScreenBox& box, const ScreenBox& first) const;

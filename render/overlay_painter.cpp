@@ -27,6 +27,12 @@ std::pair<OverlayPart&, LayoutRequest&> OverlayPainter::Cairo::add_part(PartKind
   return {part, request};
 }
 
+int OverlayPainter::Cairo::part_index(PartKind kind, int index) const {
+  for (size_t i = 0; i < parts.size(); ++i)
+    if (parts[i].kind == kind && parts[i].index == index) return int(i);
+  return -1;
+}
+
 ScreenBox OverlayPainter::Cairo::inner_frame(double edge) const {
   return {float(edge), float(edge), float(width - 2 * edge), float(height - 2 * edge)};
 }
@@ -53,6 +59,7 @@ std::string part_name(const OverlayPart& part) {
 void OverlayPainter::Cairo::lay_out(const Overlay& overlay) {
   parts.clear();
   requests.clear();
+  if (wrap_cache.size() > 256) wrap_cache.clear();
   add_title(overlay);
   add_clock(overlay);
   add_captions(overlay);

@@ -5,6 +5,8 @@
 
 #include "render/cairo_shapes.h"
 
+#include <cstdio>
+
 namespace impulse::render {
 namespace {
 
@@ -22,24 +24,31 @@ struct Shrink {
 constexpr Shrink kTextForms[] = {{1.0, 1.0}, {1.0, 0.6}, {0.8, 1.0}};
 constexpr double kBoxForms[] = {1.0, 0.8};
 
-double widest(cairo_t* cr, const std::vector<std::string>& lines) {
-  double width = 0;
-  for (const std::string& line : lines) width = std::max(width, text_width(cr, line));
-  return width;
-}
-
 }  // namespace
+
+const WrappedText& OverlayPainter::Cairo::wrapped(const std::string& text, double size, bool bold, double max_width) {
+  char font[64];
+  std::snprintf(font, sizeof font, "%.3f %d %.3f|", size, int(bold), max_width);
+  const auto [found, added] = wrap_cache.try_emplace(font + text);
+  WrappedText& wrapped = found->second;
+  if (added) {
+    cairo_t* cr = context.get();
+    set_font(cr, size, bold);
+    wrapped.lines = wrap(cr, text, max_width);
+    for (const std::string& line : wrapped.lines) wrapped.width = std::max(wrapped.width, text_width(cr, line));
+  }
+  return wrapped;
+}
 
 void OverlayPainter::Cairo::add_title(const Overlay& overlay) {
   if (overlay.title.empty()) return;
-  cairo_t* cr = context.get();
   const double column = std::max(width - 2 * margin() - kRightColumn * scale, 60 * scale);
   auto [part, request] = add_part(PartKind::title, 0);
   for (const Shrink& shrink : kTextForms) {
     const double size = kTitleSize * scale * shrink.k, pad = kTitlePad * scale * shrink.k;
-    set_font(cr, size, true);
-    PartForm& form = part.forms.emplace_back(PartForm{shrink.k, wrap(cr, overlay.title, column * shrink.wrap_share)});
-    request.sizes.emplace_back(widest(cr, form.lines) + 2 * pad, size * 1.2 * form.lines.size() + 2 * pad);
+    const WrappedText& text = wrapped(overlay.title, size, true, column * shrink.wrap_share);
+    part.forms.push_back({shrink.k, &text});
+    request.sizes.emplace_back(text.width + 2 * pad, size * 1.2 * text.lines.size() + 2 * pad);
   }
   request.spots = {{Vec2f(margin(), margin()), Vec2f(0, 0)}};
   request.slide = {3, 1};
@@ -51,9 +60,9 @@ void OverlayPainter::Cairo::draw_title(const Overlay&, const PartForm& form, con
   panel_box(cr, box.x, box.y, box.w, box.h, 8 * scale * form.k, 0.8);
   set_font(cr, size, true);
   set_colour(cr, kInk);
-  for (size_t i = 0; i < form.lines.size(); ++i) {
+  for (size_t i = 0; i < form.text->lines.size(); ++i) {
     cairo_move_to(cr, box.x + pad, box.y + pad + line_height * i + size * 0.9);
-    cairo_show_text(cr, form.lines[i].c_str());
+    cairo_show_text(cr, form.text->lines[i].c_str());
   }
 }
 
@@ -62,16 +71,17 @@ void OverlayPainter::Cairo::add_clock(const Overlay& overlay) {
   if (overlay.clock.empty() && overlay.playback.empty()) return;
   cairo_t* cr = context.get();
   auto [part, request] = add_part(PartKind::clock, 0);
+  // Measured once: every length of a smaller form is k times as long.
+  const double clock_size = kClockSize * scale, playback_size = kPlaybackSize * scale, pad = kClockPad * scale;
+  set_font(cr, clock_size, true, true);
+  double content_width = overlay.clock.empty() ? 0 : text_width(cr, overlay.clock);
+  set_font(cr, playback_size, overlay.playback_highlight);
+  content_width = std::max(content_width, overlay.playback.empty() ? 0 : text_width(cr, overlay.playback));
+  const double content_height =
+      (overlay.clock.empty() ? 0 : clock_size * 1.1) + (overlay.playback.empty() ? 0 : playback_size * 1.5);
   for (const double k : kBoxForms) {
-    const double clock_size = kClockSize * scale * k, playback_size = kPlaybackSize * scale * k, pad = kClockPad * scale * k;
-    set_font(cr, clock_size, true, true);
-    double content_width = overlay.clock.empty() ? 0 : text_width(cr, overlay.clock);
-    set_font(cr, playback_size, overlay.playback_highlight);
-    content_width = std::max(content_width, overlay.playback.empty() ? 0 : text_width(cr, overlay.playback));
-    const double content_height =
-        (overlay.clock.empty() ? 0 : clock_size * 1.1) + (overlay.playback.empty() ? 0 : playback_size * 1.5);
-    part.forms.push_back({k, {}});
-    request.sizes.emplace_back(content_width + 2 * pad, content_height + 2 * pad);
+    part.forms.push_back({k, nullptr});
+    request.sizes.emplace_back(k * (content_width + 2 * pad), k * (content_height + 2 * pad));
   }
   request.spots = {{Vec2f(width - margin(), margin()), Vec2f(1, 0)}};
   request.slide = {3, 1};
@@ -101,7 +111,6 @@ void OverlayPainter::Cairo::draw_clock(const Overlay& overlay, const PartForm& f
 // Bottom centre (or centred in the captions' span), the last caption lowest: laid out from the
 // last up, each going above the ones below it.
 void OverlayPainter::Cairo::add_captions(const Overlay& overlay) {
-  cairo_t* cr = context.get();
   const bool span = overlay.captions_right > overlay.captions_left;
   const double left = span ? overlay.captions_left : 0.0, span_width = span ? overlay.captions_right - left : width;
   const double centre = left + span_width / 2;
@@ -113,9 +122,9 @@ void OverlayPainter::Cairo::add_captions(const Overlay& overlay) {
       const double size = kCaptionSize * scale * shrink.k, pad_x = kCaptionPadX * scale * shrink.k;
       const double pad_y = kCaptionPadY * scale * shrink.k;
       const double wrap_width = (span ? span_width - 2 * pad_x : 0.8 * width) * shrink.wrap_share;
-      set_font(cr, size);
-      PartForm& form = part.forms.emplace_back(PartForm{shrink.k, wrap(cr, caption.text, wrap_width)});
-      request.sizes.emplace_back(widest(cr, form.lines) + 2 * pad_x, size * 1.35 * form.lines.size() + 2 * pad_y);
+      const WrappedText& text = wrapped(caption.text, size, false, wrap_width);
+      part.forms.push_back({shrink.k, &text});
+      request.sizes.emplace_back(text.width + 2 * pad_x, size * 1.35 * text.lines.size() + 2 * pad_y);
     }
     request.spots = {{Vec2f(centre, height - kCaptionMargin * scale), Vec2f(0.5f, 1)}};
     request.slide = {3, 1};
@@ -132,9 +141,10 @@ void OverlayPainter::Cairo::draw_caption(const Caption& caption, const PartForm&
   cairo_fill(cr);
   set_font(cr, size);
   cairo_set_source_rgba(cr, 1, 1, 1, opacity);
-  for (size_t i = 0; i < form.lines.size(); ++i) {
-    cairo_move_to(cr, centre - text_width(cr, form.lines[i]) / 2, box.y + pad_y + line * i + size * 1.0);
-    cairo_show_text(cr, form.lines[i].c_str());
+  for (size_t i = 0; i < form.text->lines.size(); ++i) {
+    const std::string& text = form.text->lines[i];
+    cairo_move_to(cr, centre - text_width(cr, text) / 2, box.y + pad_y + line * i + size * 1.0);
+    cairo_show_text(cr, text.c_str());
   }
 }
 
@@ -144,20 +154,21 @@ void OverlayPainter::Cairo::add_legend(const Overlay& overlay) {
   if (overlay.legend.empty()) return;
   cairo_t* cr = context.get();
   auto [part, request] = add_part(PartKind::legend, 0);
+  set_font(cr, kLegendSize * scale);
+  double text = 0;  // the widest entry's, at full size (a smaller form's is k times as wide)
+  for (const LegendEntry& entry : overlay.legend) text = std::max(text, text_width(cr, entry.text));
   for (const double k : kBoxForms) {
     const double pad = kLegendPad * scale * k;
     double icon_width = 34 * scale * k;
     for (const LegendEntry& entry : overlay.legend) icon_width = std::max(icon_width, double(entry.scale_pixels));
     icon_width = std::min(icon_width, 0.2 * width);
-    set_font(cr, kLegendSize * scale * k);
-    double content_width = 0;
-    for (const LegendEntry& entry : overlay.legend)
-      content_width = std::max(content_width, icon_width + 8 * scale * k + text_width(cr, entry.text));
-    part.forms.push_back({k, {}});
-    request.sizes.emplace_back(content_width + 2 * pad, kLegendLine * scale * k * overlay.legend.size() + 2 * pad);
+    part.forms.push_back({k, nullptr});
+    request.sizes.emplace_back(icon_width + 8 * scale * k + k * text + 2 * pad,
+                               kLegendLine * scale * k * overlay.legend.size() + 2 * pad);
   }
   request.spots = {{Vec2f(margin(), margin()), Vec2f(0, 0)}};
   request.slide = {3, 1};
+  request.under = part_index(PartKind::title, 0);
 }
 
 void OverlayPainter::Cairo::draw_legend(const Overlay& overlay, const PartForm& form, const ScreenBox& box) {
@@ -195,7 +206,7 @@ void OverlayPainter::Cairo::add_pane_labels(const Overlay& overlay) {
     const OverlayPane& pane = overlay.panes[i];
     if (pane.label.empty()) continue;
     auto [part, request] = add_part(PartKind::pane_label, int(i));
-    part.forms.push_back({1.0, {}});
+    part.forms.push_back({1.0, nullptr});
     request.sizes.emplace_back(text_width(cr, pane.label), 1.3 * size);
     const ScreenBox& p = pane.box;
     const float left = float(p.x + inset), right = float(p.right() - inset);
@@ -215,7 +226,7 @@ void OverlayPainter::Cairo::add_labels(const Overlay& overlay) {
   for (size_t i = 0; i < overlay.labels.size(); ++i) {
     const OverlayLabel& label = overlay.labels[i];
     auto [part, request] = add_part(PartKind::label, int(i));
-    part.forms.push_back({1.0, {}});
+    part.forms.push_back({1.0, nullptr});
     const double text = text_width(cr, label.text), ax = label.anchor.x(), ay = label.anchor.y();
     request.sizes.emplace_back(text, 1.3 * size);
     const double baselines[6][2] = {{ax + side, ay - rise},         {ax + side, ay + size + rise},

@@ -25,7 +25,7 @@ void OverlayPainter::Cairo::add_plots(const Overlay& overlay) {
     auto [part, request] = add_part(PartKind::plot, int(i));
     for (const double k : kBoxForms) {
       const double plot_width = (row ? std::clamp(share, kPlotWidth * scale, kWidestPlot * scale) : kPlotWidth * scale) * k;
-      part.forms.push_back({k, {}});
+      part.forms.push_back({k, nullptr});
       request.sizes.emplace_back(plot_width, kPlotHeight * scale * k);
     }
     if (row) {
@@ -33,9 +33,10 @@ void OverlayPainter::Cairo::add_plots(const Overlay& overlay) {
       const double x = std::max(margin(), (width - row_width) / 2) + i * (plot_width + gap);
       request.spots = {{Vec2f(float(x), overlay.plots_row_top), Vec2f(0, 0)}};
       request.slide = {1, 3};
-    } else {
+    } else {  // each under the one before, wherever that went
       request.spots = {{Vec2f(width - margin(), margin()), Vec2f(1, 0)}};
       request.slide = {3, 1};
+      if (i > 0) request.under = part_index(PartKind::plot, int(i) - 1);
     }
   }
 }
@@ -131,7 +132,7 @@ void OverlayPainter::Cairo::add_panels(const Overlay& overlay) {
     auto [part, request] = add_part(PartKind::panel, int(i));
     for (const double k : kPanelForms) {
       const PanelPainter::Size size = panel_painter.measure(cr, panel, scale * k);
-      part.forms.push_back({k, {}});
+      part.forms.push_back({k, nullptr});
       request.sizes.emplace_back(size.width, size.height);
     }
     const bool in_pane = panel.pane >= 0 && panel.pane < int(overlay.panes.size());
