@@ -7,6 +7,7 @@
 #include "render/overlay.h"
 #include "render/overlay_layout.h"
 #include "render/overlay_painter.h"
+#include "render/overlay_text.h"
 #include "render/palette.h"
 #include "render/panel_painter.h"
 
@@ -19,23 +20,13 @@
 
 namespace impulse::render {
 
-inline constexpr const char* kFont = "DejaVu Sans";
-inline constexpr const char* kMonoFont = "DejaVu Sans Mono";
 inline const Colour kInk{0.13f, 0.13f, 0.15f};
 inline const Colour kMutedInk{0.35f, 0.36f, 0.40f};
 inline const Colour kHighlight = okabe_ito::vermillion;  // as the contact normals
 
 void set_colour(cairo_t* cr, const Colour& colour, double alpha = 1.0);
-void set_font(cairo_t* cr, double size, bool bold = false, bool mono = false);
-double text_width(cairo_t* cr, const std::string& text);
 // A flat arrow from (x0, y) to (x0 + length, y), as the 3D arrows are drawn.
 void legend_arrow(cairo_t* cr, double x0, double y, double length, double scale, const Colour& colour);
-// Splits a word wider than `max_width` between characters (UTF-8 sequences kept whole) into
-// pieces that fit, each at least one character.
-std::vector<std::string> split_word(cairo_t* cr, const std::string& word, double max_width);
-// Splits `text` at spaces into lines no wider than `max_width`; a word wider than that alone is
-// split between characters.
-std::vector<std::string> wrap(cairo_t* cr, const std::string& text, double max_width);
 
 // The parts of the layer painted this time (pixel rectangles): only they are cleared and
 // composited, so a frame with a small overlay costs little.

@@ -62,7 +62,7 @@ void OverlayPainter::Cairo::draw_title(const Overlay&, const PartForm& form, con
   set_colour(cr, kInk);
   for (size_t i = 0; i < form.text->lines.size(); ++i) {
     cairo_move_to(cr, box.x + pad, box.y + pad + line_height * i + size * 0.9);
-    cairo_show_text(cr, form.text->lines[i].c_str());
+    show_text(cr, form.text->lines[i]);
   }
 }
 
@@ -97,14 +97,14 @@ void OverlayPainter::Cairo::draw_clock(const Overlay& overlay, const PartForm& f
     set_font(cr, clock_size, true, true);
     set_colour(cr, kInk);
     cairo_move_to(cr, right - text_width(cr, overlay.clock), y + clock_size * 0.85);
-    cairo_show_text(cr, overlay.clock.c_str());
+    show_text(cr, overlay.clock);
     y += clock_size * 1.1;
   }
   if (!overlay.playback.empty()) {
     set_font(cr, playback_size, overlay.playback_highlight);
     set_colour(cr, overlay.playback_highlight ? kHighlight : kMutedInk);
     cairo_move_to(cr, right - text_width(cr, overlay.playback), y + playback_size * 1.2);
-    cairo_show_text(cr, overlay.playback.c_str());
+    show_text(cr, overlay.playback);
   }
 }
 
@@ -144,7 +144,7 @@ void OverlayPainter::Cairo::draw_caption(const Caption& caption, const PartForm&
   for (size_t i = 0; i < form.text->lines.size(); ++i) {
     const std::string& text = form.text->lines[i];
     cairo_move_to(cr, centre - text_width(cr, text) / 2, box.y + pad_y + line * i + size * 1.0);
-    cairo_show_text(cr, text.c_str());
+    show_text(cr, text);
   }
 }
 
@@ -192,7 +192,7 @@ void OverlayPainter::Cairo::draw_legend(const Overlay& overlay, const PartForm& 
     }
     set_colour(cr, kInk);
     cairo_move_to(cr, box.x + pad + icon_width + 8 * scale * k, middle + size * 0.35);
-    cairo_show_text(cr, entry.text.c_str());
+    show_text(cr, entry.text);
     row += line;
   }
 }
@@ -253,7 +253,7 @@ void OverlayPainter::Cairo::draw_label(const std::string& text, const Colour& co
   const double size = kLabelSize * scale * form.k;
   set_font(cr, size, true);
   cairo_move_to(cr, box.x, box.y + size);
-  cairo_text_path(cr, text.c_str());
+  text_path(cr, text);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_width(cr, 4.0 * scale);
   cairo_set_source_rgba(cr, 1, 1, 1, 0.9);

@@ -68,7 +68,7 @@ void OverlayPainter::Cairo::draw_plot(const Plot& plot, const PartForm& form, co
   }
   set_colour(cr, kInk);
   cairo_move_to(cr, x + pad, y + pad + title_size * 0.8);
-  cairo_show_text(cr, heading.c_str());
+  show_text(cr, heading);
   set_font(cr, title_size, true, true);
   double value_right = x + plot_width - pad;
   for (auto series = plot.series.rbegin(); series != plot.series.rend(); ++series) {
@@ -77,7 +77,7 @@ void OverlayPainter::Cairo::draw_plot(const Plot& plot, const PartForm& form, co
     value_right -= text_width(cr, value);
     set_colour(cr, series->colour);
     cairo_move_to(cr, value_right, y + pad + title_size * 0.8);
-    cairo_show_text(cr, value.c_str());
+    show_text(cr, value);
     value_right -= 0.6 * title_size;
   }
 
