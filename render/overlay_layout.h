@@ -4,15 +4,16 @@
 // Elements are placed one at a time, in the order given: an earlier one gets the better place.
 // Each goes inside the frame (and inside its own bounds), never over an element placed before it
 // nor within `gap` of one, and over the scene's moving bodies (or across the lines it avoids)
-// only when no free place is left, then over as few as can be. The place is its first spot when
-// that is free, else its next spots, else the free place nearest its first spot: the distance,
-// weighted by `slide` (a column element moves down rather than across), plus the panes and still
-// bodies it would cover, each covered cell counting as a cell's width of distance, so an element
-// prefers the space between a comparison's panes. An element with no free place at its first
-// size tries its next (smaller, or wrapped narrower); one with no place at all, even over bodies,
-// is left out.
+// only when no free place is left, then over as few as can be. The place is its first spot that
+// covers nothing, else the free place nearest its first spot: the distance, weighted by `slide`
+// (a column element moves down rather than across), plus what it would cover of the panes, of
+// still bodies and (a lasting element) of where bodies go over the whole video, each cell so
+// covered counting as some cells' width of distance; so an element prefers the space between a
+// comparison's panes. A lasting element stays where it was last frame while that is free of
+// bodies. An element with no free place at its first size tries its next (smaller, or wrapped
+// narrower); one with no place at all, even over bodies, is left out.
 //
-// Cost: the bodies are summed into a coarse grid once per frame (summed-area tables), so a
+// Cost: the bodies are summed into coarse grids once per frame (summed-area tables), so a
 // candidate place costs a few lookups however many bodies there are; a frame of a dozen elements
 // takes tens of microseconds.
 #pragma once
