@@ -31,10 +31,16 @@ ScreenBox intersection(const ScreenBox& a, const ScreenBox& b) {
   return {x, y, std::max(0.0f, std::min(a.right(), b.right()) - x), std::max(0.0f, std::min(a.bottom(), b.bottom()) - y)};
 }
 
+// The cell index of `value` pixels, rounded down (or up), within 0 .. limit (0 for not a number).
+int cell_index(float value, float cell, int limit, bool up) {
+  const float index = up ? std::ceil(value / cell) : std::floor(value / cell);
+  return index >= 0 ? int(std::min(index, float(limit))) : 0;
+}
+
 // Adds `weight` to every cell `box` touches, in a columns x rows grid of `cell`-pixel cells.
 void mark(std::vector<int32_t>& cells, int columns, int rows, float cell, const ScreenBox& box, int32_t weight) {
-  const int i0 = std::clamp(int(std::floor(box.x / cell)), 0, columns), i1 = std::clamp(int(std::ceil(box.right() / cell)), 0, columns);
-  const int j0 = std::clamp(int(std::floor(box.y / cell)), 0, rows), j1 = std::clamp(int(std::ceil(box.bottom() / cell)), 0, rows);
+  const int i0 = cell_index(box.x, cell, columns, false), i1 = cell_index(box.right(), cell, columns, true);
+  const int j0 = cell_index(box.y, cell, rows, false), j1 = cell_index(box.bottom(), cell, rows, true);
   for (int j = j0; j < j1; ++j)
     for (int i = i0; i < i1; ++i) cells[size_t(j) * columns + i] += weight;
 }

@@ -31,6 +31,15 @@ std::optional<render::ScreenBox> box_box(const BodyPose& pose, const physics::Ve
   return render::ScreenBox{low.x(), low.y(), high.x() - low.x(), high.y() - low.y()};
 }
 
+// The box cut to a frame's size beyond each edge of the frame: a body close to the camera
+// projects to thousands of frames' width, and what matters is only that it covers the frame.
+render::ScreenBox within_reach(const render::ScreenBox& box, const render::CameraView& view) {
+  const float w = float(view.width), h = float(view.height);
+  const float x0 = std::max(box.x, -w), y0 = std::max(box.y, -h);
+  const float x1 = std::min(box.right(), 2 * w), y1 = std::min(box.bottom(), 2 * h);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
 }  // namespace
 
 void add_body_boxes(const std::vector<physics::Body>& bodies, const std::vector<BodyPose>& poses,
@@ -40,8 +49,8 @@ void add_body_boxes(const std::vector<physics::Body>& bodies, const std::vector<
     std::optional<render::ScreenBox> box;
     if (body.shape.type == physics::ShapeType::sphere) box = sphere_box(poses[i].position, body.shape.radius, view);
     else if (body.shape.type == physics::ShapeType::box) box = box_box(poses[i], body.shape.half_extents, view);
-    if (!box || box->right() <= 0 || box->bottom() <= 0 || box->x >= float(view.width) || box->y >= float(view.height)) continue;
-    out.push_back({0, body.name, *box, !body.is_static()});
+    if (!box || !(box->right() > 0 && box->bottom() > 0 && box->x < float(view.width) && box->y < float(view.height))) continue;
+    out.push_back({0, body.name, within_reach(*box, view), !body.is_static()});
   }
 }
 
@@ -52,6 +61,7 @@ BodyPaths::BodyPaths(int width, int height)
       covered_(size_t(columns_) * rows_, 0) {}
 
 void BodyPaths::add(const render::ScreenBox& box) {
+  // Boxes are cut to a frame beyond each edge (add_body_boxes), so these stay small numbers.
   const int i0 = std::clamp(int(std::floor(box.x / cell_)), 0, columns_), i1 = std::clamp(int(std::ceil(box.right() / cell_)), 0, columns_);
   const int j0 = std::clamp(int(std::floor(box.y / cell_)), 0, rows_), j1 = std::clamp(int(std::ceil(box.bottom() / cell_)), 0, rows_);
   for (int j = j0; j < j1; ++j) std::fill(covered_.begin() + size_t(j) * columns_ + i0, covered_.begin() + size_t(j) * columns_ + i1, 1);
