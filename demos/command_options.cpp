@@ -81,12 +81,17 @@ void add_output_options(CLI::App* command, OutputArguments& arguments, const std
   command->add_option("--at", arguments.moments,
                       "With --png: stills at these moments of simulated time, in seconds (t_0.500.png, ...), "
                       "e.g. 0.5,1,2; the video's frames are then not written as PNG unless --frames says so");
+  command->add_option("--layout-report", arguments.layout_report,
+                      "Also write, as JSON, where each frame's overlay put each element (title, clock, captions, "
+                      "legend, plots, panels, labels) and where each pane's bodies are on screen")
+      ->type_name("FILE.json");
 }
 
 RenderOptions output_options(const OutputArguments& arguments, const std::string& default_path) {
   RenderOptions options;
   options.video_path = arguments.video_path.empty() ? default_path : arguments.video_path;
   options.png_directory = arguments.png_directory;
+  options.layout_report_path = arguments.layout_report;
   if (!arguments.frames.empty()) {
     if (arguments.png_directory.empty()) throw std::invalid_argument("--frames chooses PNG frames: add --png DIR");
     options.png_frames = parse_frames(arguments.frames);

@@ -1,7 +1,7 @@
 // The options several commands share, each added in one place: what every command that reads a
 // scene takes (--set), what every command that renders takes (--quality, --width, ...), and
-// where render and compare write (-o, --png, --frames, --at). A new option for all of them is a
-// field of SceneArguments or VideoOverrides (program.h) and a line here.
+// where render and compare write (-o, --png, --frames, --at, --layout-report). A new option for
+// all of them is a field of SceneArguments or VideoOverrides (program.h) and a line here.
 #pragma once
 #include "demos/program.h"
 
@@ -29,8 +29,9 @@ struct OutputArguments {
   std::string png_directory;  // --png
   std::string frames;         // --frames 0,45,90
   std::string moments;        // --at 0.5,1,2
+  std::string layout_report;  // --layout-report FILE.json
 };
-// -o (with `output_help`), --png, --frames, --at.
+// -o (with `output_help`), --png, --frames, --at, --layout-report.
 void add_output_options(CLI::App* command, OutputArguments& arguments, const std::string& output_help);
 // The render options they ask for: the video (at `default_path`, its directory made, when -o is
 // not given), the PNG frames and stills. Throws std::invalid_argument for --frames or --at

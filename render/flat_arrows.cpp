@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace impulse::render {
 namespace {
@@ -16,13 +17,21 @@ void add(std::vector<FlatVertex>& triangles, const Vec3f& p, const Colour& colou
 
 }  // namespace
 
-void append_flat_arrow(const ArrowItem& arrow, const CameraView& camera, std::vector<FlatVertex>& triangles) {
+namespace {
+
+// An arrow's corners as drawn: the shaft from `origin` to `head_base`, `shaft_side` either side of
+// its line, and the head from `head_base` (`head_side` either side) to `tip`.
+struct ArrowShape {
+  Vec3f origin, head_base, tip, shaft_side, head_side;
+};
+
+std::optional<ArrowShape> arrow_shape(const ArrowItem& arrow, const CameraView& camera) {
   const float length = arrow.direction.norm();
-  if (!(length > 1e-5f) || !arrow.origin.allFinite()) return;
+  if (!(length > 1e-5f) || !arrow.origin.allFinite()) return std::nullopt;
   const Vec3f axis = arrow.direction / length;
   const Vec3f middle = arrow.origin + 0.5f * arrow.direction;
   const float pixels_per_metre = camera.pixels_per_metre(middle);
-  if (!(pixels_per_metre > 0.0f)) return;
+  if (!(pixels_per_metre > 0.0f)) return std::nullopt;
 
   // Across the arrow, in the plane facing the camera; any perpendicular if it points at the eye.
   Vec3f side = axis.cross(camera.position - middle);
@@ -38,10 +47,16 @@ void append_flat_arrow(const ArrowItem& arrow, const CameraView& camera, std::ve
   const Vec3f to_eye = camera.position - middle;
   const Vec3f lift = to_eye * (kLayerOffset * static_cast<float>(std::clamp(arrow.layer, 0, 10)));
   const Vec3f origin = arrow.origin + lift;
-  const Vec3f head_base = origin + axis * (length - std::min(head_length, length));
-  const Vec3f tip = origin + arrow.direction;
-  const Vec3f shaft_side = side * shaft_half_width;
-  const Vec3f head_side = side * head_half_width;
+  return ArrowShape{origin, origin + axis * (length - std::min(head_length, length)), origin + arrow.direction,
+                    side * shaft_half_width, side * head_half_width};
+}
+
+}  // namespace
+
+void append_flat_arrow(const ArrowItem& arrow, const CameraView& camera, std::vector<FlatVertex>& triangles) {
+  const std::optional<ArrowShape> shape = arrow_shape(arrow, camera);
+  if (!shape) return;
+  const auto& [origin, head_base, tip, shaft_side, head_side] = *shape;
   const Colour& c = arrow.colour;
   add(triangles, origin - shaft_side, c);
   add(triangles, head_base - shaft_side, c);
@@ -52,6 +67,22 @@ void append_flat_arrow(const ArrowItem& arrow, const CameraView& camera, std::ve
   add(triangles, head_base - head_side, c);
   add(triangles, tip, c);
   add(triangles, head_base + head_side, c);
+}
+
+void append_flat_arrow_outline(const ArrowItem& arrow, const CameraView& camera, std::vector<ScreenSegment>& outline) {
+  const std::optional<ArrowShape> shape = arrow_shape(arrow, camera);
+  if (!shape) return;
+  const auto& [origin, head_base, tip, shaft_side, head_side] = *shape;
+  const Vec3f corners[][2] = {{origin, tip},
+                              {origin - shaft_side, head_base - shaft_side},
+                              {origin + shaft_side, head_base + shaft_side},
+                              {head_base - head_side, head_base + head_side},
+                              {head_base - head_side, tip},
+                              {head_base + head_side, tip}};
+  for (const auto& [from, to] : corners) {
+    const auto a = camera.to_pixels(from), b = camera.to_pixels(to);
+    if (a && b) outline.push_back({*a, *b});
+  }
 }
 
 void append_flat_line(const LineItem& line, const CameraView& camera, std::vector<FlatVertex>& triangles) {

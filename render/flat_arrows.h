@@ -7,6 +7,7 @@
 
 #include "render/camera_view.h"
 #include "render/draw_list.h"
+#include "render/overlay.h"
 
 namespace impulse::render {
 
@@ -19,6 +20,10 @@ struct FlatVertex {
 // ones stay slim, and never get thinner on screen than a few pixels (they stay legible far away).
 // Arrows shorter than 1e-5 m, or behind the camera, add nothing.
 void append_flat_arrow(const ArrowItem& arrow, const CameraView& camera, std::vector<FlatVertex>& triangles);
+
+// The arrow's outline on screen, as append_flat_arrow draws it: its centre line, the shaft's two
+// sides and the head's three, for an overlay label that must not cover it.
+void append_flat_arrow_outline(const ArrowItem& arrow, const CameraView& camera, std::vector<ScreenSegment>& outline);
 
 // A line as a camera-facing strip `width_pixels` wide (two triangles).
 void append_flat_line(const LineItem& line, const CameraView& camera, std::vector<FlatVertex>& triangles);

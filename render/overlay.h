@@ -18,13 +18,22 @@ struct ScreenSegment {
   Vec2f from, to;
 };
 
+// A rectangle of the frame in pixels, x right and y down from its top-left corner.
+struct ScreenBox {
+  float x = 0, y = 0, w = 0, h = 0;
+  float right() const { return x + w; }
+  float bottom() const { return y + h; }
+};
+
 // Text beside a point of the frame (e.g. an arrow's tip): "J = 2.41 N·s". It goes to the first
-// place around the anchor (right, then left, above, below) that covers none of `avoid`.
+// free place around the anchor (right, then left, above, below) that covers none of `avoid`,
+// else to the nearest free place (overlay_layout.h).
 struct OverlayLabel {
   Vec2f anchor;
   std::string text;
   Colour colour{0.1f, 0.1f, 0.1f};
   std::vector<ScreenSegment> avoid;
+  int pane = -1;  // >= 0: it stays inside that pane (Overlay::panes)
 };
 
 // Typeset mathematics: an SVG of filled paths (LaTeX through dvisvgm), drawn in the ink colour.
@@ -49,6 +58,7 @@ struct OverlayPanel {
   OverlayMath math;
   Colour colour{0.1f, 0.1f, 0.1f};  // of the heading
   float opacity = 1.0f;             // fades in and out like captions
+  int pane = -1;                    // >= 0: it stays inside that pane (Overlay::panes)
 };
 
 // One line of the legend: a short arrow (or dot) in `colour`, then `text`. When
@@ -86,6 +96,23 @@ struct Caption {
   float opacity = 1.0f;
 };
 
+// One pane of a comparison: where it is in the frame, and its name (drawn inside it, bottom left
+// where free, in its colour).
+struct OverlayPane {
+  ScreenBox box;
+  std::string label;
+  Colour colour;
+};
+
+// Where a body is on screen (its projected bounding box): the overlay covers a moving body only
+// where no free place is left, and a still one (a ramp, a table) rather than move far.
+struct OverlayBody {
+  int pane = 0;
+  std::string name;
+  ScreenBox box;
+  bool moving = true;
+};
+
 struct Overlay {
   std::string title;                  // top left
   std::vector<Caption> captions;      // lines shown now, bottom centre
@@ -99,10 +126,14 @@ struct Overlay {
   std::vector<LegendEntry> legend;    // under the title
   std::vector<Plot> plots;            // a column at the right, or a row (plots_row_top)
   float plots_row_top = -1.0f;        // >= 0: the plots in a centred row from this y down instead
+  std::vector<OverlayPane> panes;     // a comparison's; empty: the scene fills the frame
+  std::vector<OverlayBody> bodies;    // what the elements go round
+  std::vector<ScreenBox> body_paths;  // where moving bodies go over the whole video (boxes of a coarse
+                                      // grid's cells): what stays on screen keeps off them
 
   bool empty() const {
     return title.empty() && captions.empty() && labels.empty() && panels.empty() && clock.empty() && playback.empty() &&
-           legend.empty() && plots.empty();
+           legend.empty() && plots.empty() && panes.empty();
   }
 };
 

@@ -1,45 +1,59 @@
-// What the overlay's painting files share (overlay_painter.cpp, overlay_text.cpp,
-// overlay_plots.cpp): the cairo surface and context with the parts painted, the fonts and inks,
-// and the text and arrow helpers. Inside the renderer only.
+// What the overlay's painting files share (overlay_painter.cpp, overlay_parts.cpp,
+// overlay_plots.cpp, overlay_text.cpp): the cairo surface and context, the parts of a frame's
+// overlay as measured, laid out and painted, the fonts and inks, and the text and arrow helpers.
+// Inside the renderer only.
 #pragma once
 #include "render/cairo_handles.h"
 #include "render/overlay.h"
+#include "render/overlay_layout.h"
 #include "render/overlay_painter.h"
+#include "render/overlay_text.h"
 #include "render/palette.h"
 #include "render/panel_painter.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
 namespace impulse::render {
 
-inline constexpr const char* kFont = "DejaVu Sans";
-inline constexpr const char* kMonoFont = "DejaVu Sans Mono";
 inline const Colour kInk{0.13f, 0.13f, 0.15f};
 inline const Colour kMutedInk{0.35f, 0.36f, 0.40f};
 inline const Colour kHighlight = okabe_ito::vermillion;  // as the contact normals
 
 void set_colour(cairo_t* cr, const Colour& colour, double alpha = 1.0);
-void set_font(cairo_t* cr, double size, bool bold = false, bool mono = false);
-double text_width(cairo_t* cr, const std::string& text);
 // A flat arrow from (x0, y) to (x0 + length, y), as the 3D arrows are drawn.
 void legend_arrow(cairo_t* cr, double x0, double y, double length, double scale, const Colour& colour);
-// Whether the segment from a to b meets the rectangle [x0, x1] x [y0, y1] (Liang-Barsky clipping).
-bool segment_meets(const Vec2f& a, const Vec2f& b, double x0, double y0, double x1, double y1);
-// Splits a word wider than `max_width` between characters (UTF-8 sequences kept whole) into
-// pieces that fit, each at least one character.
-std::vector<std::string> split_word(cairo_t* cr, const std::string& word, double max_width);
-// Splits `text` at spaces into lines no wider than `max_width`; a word wider than that alone is
-// split between characters.
-std::vector<std::string> wrap(cairo_t* cr, const std::string& text, double max_width);
 
 // The parts of the layer painted this time (pixel rectangles): only they are cleared and
 // composited, so a frame with a small overlay costs little.
 struct PixelRect {
   int x0, y0, x1, y1;  // [x0, x1) x [y0, y1)
+};
+
+// What kind of element a part is; its index says which caption, pane, plot, panel or label.
+enum class PartKind { title, clock, caption, pane_label, legend, plot, panel, label };
+
+// Text wrapped to a width in a font, and its widest line's width.
+struct WrappedText {
+  std::vector<std::string> lines;
+  double width = 0;
+};
+
+// One way to draw a part: its letters and boxes at `k` times their designed size, its text (a
+// title's or caption's) wrapped to a width.
+struct PartForm {
+  double k = 1;
+  const WrappedText* text = nullptr;
+};
+
+struct OverlayPart {
+  PartKind kind = PartKind::title;
+  int index = 0;
+  std::vector<PartForm> forms;  // one per size of its layout request, the preferred first
 };
 
 struct OverlayPainter::Cairo {
@@ -52,6 +66,17 @@ struct OverlayPainter::Cairo {
   std::vector<std::pair<int, int>> spans;  // scratch for composite_onto
   PanelPainter panel_painter;              // keeps each typeset SVG rasterised
 
+  // This frame's parts and their requests, one for one, and where the layout put them.
+  std::vector<OverlayPart> parts;
+  std::vector<LayoutRequest> requests;
+  LayoutGround ground;
+  OverlayLayout layout;
+  PaintedLayout result;
+  // Titles and captions as wrapped, kept from frame to frame (they stay the same for many
+  // frames); forgotten, between frames, when many are kept.
+  std::unordered_map<std::string, WrappedText> wrap_cache;
+  const WrappedText& wrapped(const std::string& text, double size, bool bold, double max_width);
+
   void mark(double x, double y, double w, double h) {
     const int margin = 2 + static_cast<int>(4 * scale);  // anti-aliased edges and text halos
     PixelRect rect{std::max(0, static_cast<int>(std::floor(x)) - margin),
@@ -62,16 +87,37 @@ struct OverlayPainter::Cairo {
   }
   void clear_painted();
 
-  void title(const Overlay& overlay, double& bottom);
-  void clock(const Overlay& overlay, double& bottom);
-  double plots(const Overlay& overlay, double top);   // returns the column's bottom
-  double legend(const Overlay& overlay, double top);  // returns its bottom
-  void labels(const Overlay& overlay);
-  std::pair<double, double> label_place(const OverlayLabel& label, double text_width, double size) const;
-  // `left_top`, `right_top`: where the left and right columns' content ends; `captions_top`.
-  void panels(const Overlay& overlay, double left_top, double right_top, double captions_top);
-  double captions(const Overlay& overlay);  // returns the top of the captions (height if none)
+  // The frame's margin (20 pixels at 720 lines): where elements go, at most half of it from an edge.
+  double margin() const { return 20 * scale; }
+  ScreenBox inner_frame(double edge) const;  // the frame without `edge` pixels round it
+  // A new part and its request, to be filled by the add_ functions.
+  std::pair<OverlayPart&, LayoutRequest&> add_part(PartKind kind, int index);
+  int part_index(PartKind kind, int index) const;  // of a part added before; -1: none
+
+  // Each measures its part in each of its forms and says where it would go (overlay_parts.cpp,
+  // overlay_plots.cpp), in the order the layout places them.
+  void add_title(const Overlay& overlay);
+  void add_clock(const Overlay& overlay);
+  void add_captions(const Overlay& overlay);
+  void add_pane_labels(const Overlay& overlay);
+  void add_legend(const Overlay& overlay);
+  void add_plots(const Overlay& overlay);
+  void add_panels(const Overlay& overlay);
+  void add_labels(const Overlay& overlay);
+  void lay_out(const Overlay& overlay);  // all of the above, then the layout
+
+  // Each paints its part in `form` with its box at `box`.
+  void draw(const Overlay& overlay, const OverlayPart& part, const PartForm& form, const ScreenBox& box);
+  void draw_title(const Overlay& overlay, const PartForm& form, const ScreenBox& box);
+  void draw_clock(const Overlay& overlay, const PartForm& form, const ScreenBox& box);
+  void draw_caption(const Caption& caption, const PartForm& form, const ScreenBox& box);
+  void draw_label(const std::string& text, const Colour& colour, const PartForm& form, const ScreenBox& box);
+  void draw_legend(const Overlay& overlay, const PartForm& form, const ScreenBox& box);
+  void draw_plot(const Plot& plot, const PartForm& form, const ScreenBox& box);
   void composite_onto(Frame& frame);
 };
+
+// The name a part has in the layout report: "title", "caption 2", "pane label 1", ...
+std::string part_name(const OverlayPart& part);
 
 }  // namespace impulse::render

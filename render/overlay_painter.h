@@ -1,12 +1,29 @@
 // Paints an Overlay (overlay.h) over a Frame with cairo: text in DejaVu Sans, anti-aliased lines.
-// Sizes follow the frame's height (a 480p and a 1080p video look alike). One painter per thread.
+// Sizes follow the frame's height (a 480p and a 1080p video look alike). Every element is measured
+// first, then laid out (overlay_layout.h: never over another, never outside the frame, over
+// bodies only when no free place is left), then painted where the layout put it. One painter per
+// thread.
 #pragma once
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "render/frame.h"
 #include "render/overlay.h"
 
 namespace impulse::render {
+
+// Where the last paint() put each element of the overlay (overlay_layout.h places them): its
+// name ("title", "clock", "caption 1", "legend", "plot 2", "panel 1", "pane label 3", "label 1")
+// and its box, in the order placed; and the elements left out because no place was left.
+struct PaintedElement {
+  std::string name;
+  ScreenBox box;
+};
+struct PaintedLayout {
+  std::vector<PaintedElement> elements;
+  std::vector<std::string> dropped;
+};
 
 class OverlayPainter {
  public:
@@ -18,6 +35,8 @@ class OverlayPainter {
 
   // Draws `overlay` onto `frame` (its size must be the painter's; else std::invalid_argument).
   void paint(const Overlay& overlay, Frame& frame);
+  // What the last paint() placed where.
+  const PaintedLayout& layout() const;
 
  private:
   struct Cairo;  // the surface and context, kept out of this header

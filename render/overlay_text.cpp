@@ -1,12 +1,43 @@
+#include "render/overlay_text.h"
+
 #include "render/overlay_cairo.h"
 
-#include "render/cairo_shapes.h"
+#include <pango/pangocairo.h>
+
+#include <algorithm>
+#include <memory>
+#include <unordered_map>
 
 namespace impulse::render {
+namespace {
 
-void set_colour(cairo_t* cr, const Colour& colour, double alpha) {
-  cairo_set_source_rgba(cr, colour.r, colour.g, colour.b, alpha);
+constexpr const char* kFont = "DejaVu Sans";
+constexpr const char* kMonoFont = "DejaVu Sans Mono";
+
+struct LayoutDeleter {
+  void operator()(PangoLayout* layout) const { g_object_unref(layout); }
+};
+using LayoutHandle = std::unique_ptr<PangoLayout, LayoutDeleter>;
+
+// `text` as one line set by Pango in the context's current font (family, weight and size).
+LayoutHandle pango_line(cairo_t* cr, const std::string& text) {
+  LayoutHandle layout(pango_cairo_create_layout(cr));
+  cairo_font_face_t* face = cairo_get_font_face(cr);
+  cairo_matrix_t matrix;
+  cairo_get_font_matrix(cr, &matrix);
+  PangoFontDescription* font = pango_font_description_new();
+  pango_font_description_set_family(font, cairo_toy_font_face_get_family(face));
+  pango_font_description_set_weight(
+      font, cairo_toy_font_face_get_weight(face) == CAIRO_FONT_WEIGHT_BOLD ? PANGO_WEIGHT_BOLD : PANGO_WEIGHT_NORMAL);
+  pango_font_description_set_absolute_size(font, matrix.yy * PANGO_SCALE);
+  pango_layout_set_font_description(layout.get(), font);
+  pango_font_description_free(font);
+  pango_layout_set_single_paragraph_mode(layout.get(), true);
+  pango_layout_set_text(layout.get(), text.data(), int(text.size()));
+  return layout;
 }
+
+}  // namespace
 
 void set_font(cairo_t* cr, double size, bool bold, bool mono) {
   cairo_select_font_face(cr, mono ? kMonoFont : kFont, CAIRO_FONT_SLANT_NORMAL,
@@ -14,10 +45,56 @@ void set_font(cairo_t* cr, double size, bool bold, bool mono) {
   cairo_set_font_size(cr, size);
 }
 
+// Printable ASCII always (DejaVu has it); else the font's glyphs, none the missing glyph (0), the
+// answer kept per font and text (a caption is asked about every frame it shows).
+bool font_has_every_character(cairo_t* cr, const std::string& text) {
+  if (std::all_of(text.begin(), text.end(), [](char c) { return c >= 0x20 && c < 0x7f; })) return true;
+  cairo_font_face_t* face = cairo_get_font_face(cr);
+  const std::string key = std::string(cairo_toy_font_face_get_family(face)) + char('0' + cairo_toy_font_face_get_weight(face)) + text;
+  thread_local std::unordered_map<std::string, bool> known;
+  if (const auto found = known.find(key); found != known.end()) return found->second;
+  cairo_glyph_t* glyphs = nullptr;
+  int count = 0;
+  bool every = cairo_scaled_font_text_to_glyphs(cairo_get_scaled_font(cr), 0, 0, text.data(), int(text.size()), &glyphs,
+                                                &count, nullptr, nullptr, nullptr) == CAIRO_STATUS_SUCCESS;
+  for (int i = 0; every && i < count; ++i) every = glyphs[i].index != 0;
+  cairo_glyph_free(glyphs);
+  if (known.size() > 4096) known.clear();
+  known.emplace(key, every);
+  return every;
+}
+
 double text_width(cairo_t* cr, const std::string& text) {
-  cairo_text_extents_t extents;
-  cairo_text_extents(cr, text.c_str(), &extents);
-  return extents.x_advance;
+  if (font_has_every_character(cr, text)) {
+    cairo_text_extents_t extents;
+    cairo_text_extents(cr, text.c_str(), &extents);
+    return extents.x_advance;
+  }
+  PangoRectangle logical;
+  pango_layout_get_extents(pango_line(cr, text).get(), nullptr, &logical);
+  return double(logical.width) / PANGO_SCALE;
+}
+
+void show_text(cairo_t* cr, const std::string& text) {
+  if (font_has_every_character(cr, text)) {
+    cairo_show_text(cr, text.c_str());
+    return;
+  }
+  const LayoutHandle layout = pango_line(cr, text);
+  pango_cairo_show_layout_line(cr, pango_layout_get_line_readonly(layout.get(), 0));
+}
+
+void text_path(cairo_t* cr, const std::string& text) {
+  if (font_has_every_character(cr, text)) {
+    cairo_text_path(cr, text.c_str());
+    return;
+  }
+  const LayoutHandle layout = pango_line(cr, text);
+  pango_cairo_layout_line_path(cr, pango_layout_get_line_readonly(layout.get(), 0));
+}
+
+void set_colour(cairo_t* cr, const Colour& colour, double alpha) {
+  cairo_set_source_rgba(cr, colour.r, colour.g, colour.b, alpha);
 }
 
 // A flat arrow from (x0, y) to (x0 + length, y), as the 3D arrows are drawn.
@@ -33,25 +110,6 @@ void legend_arrow(cairo_t* cr, double x0, double y, double length, double scale,
   cairo_line_to(cr, x0 + length - head_length, y + head_half);
   cairo_close_path(cr);
   cairo_fill(cr);
-}
-
-// Whether the segment from a to b meets the rectangle [x0, x1] x [y0, y1] (Liang-Barsky clipping).
-bool segment_meets(const Vec2f& a, const Vec2f& b, double x0, double y0, double x1, double y1) {
-  double enter = 0, leave = 1;
-  const double d[2] = {double(b.x() - a.x()), double(b.y() - a.y())};
-  const double p[4] = {-d[0], d[0], -d[1], d[1]};
-  const double q[4] = {a.x() - x0, x1 - a.x(), a.y() - y0, y1 - a.y()};
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0) {
-      if (q[i] < 0) return false;
-      continue;
-    }
-    const double t = q[i] / p[i];
-    if (p[i] < 0) enter = std::max(enter, t);
-    else leave = std::min(leave, t);
-    if (enter > leave) return false;
-  }
-  return true;
 }
 
 // Splits a word wider than `max_width` between characters (UTF-8 sequences kept whole) into

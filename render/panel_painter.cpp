@@ -1,6 +1,7 @@
 #include "render/panel_painter.h"
 
 #include "render/cairo_shapes.h"
+#include "render/overlay_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,11 +20,7 @@ struct Metrics {
 };
 Metrics metrics(double scale) { return {15 * scale, 15 * scale * 1.4, 10 * scale, 6 * scale}; }
 
-void set_line_font(cairo_t* cr, double size, bool heading) {
-  cairo_select_font_face(cr, heading ? "DejaVu Sans" : "DejaVu Sans Mono", CAIRO_FONT_SLANT_NORMAL,
-                         heading ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, size);
-}
+void set_line_font(cairo_t* cr, double size, bool heading) { set_font(cr, size, heading, !heading); }
 
 }  // namespace
 
@@ -44,9 +41,7 @@ PanelPainter::Size PanelPainter::measure(cairo_t* cr, const OverlayPanel& panel,
   Size size;
   for (size_t i = 0; i < panel.lines.size(); ++i) {
     set_line_font(cr, m.size, i == 0);
-    cairo_text_extents_t extents;
-    cairo_text_extents(cr, panel.lines[i].c_str(), &extents);
-    size.width = std::max(size.width, extents.x_advance);
+    size.width = std::max(size.width, text_width(cr, panel.lines[i]));
   }
   size.height = panel.lines.empty() ? 0 : m.line * panel.lines.size() - 0.3 * m.line;
   if (const SvgRaster* math = raster(panel.math, scale)) {
@@ -67,7 +62,7 @@ void PanelPainter::paint_content(cairo_t* cr, const OverlayPanel& panel, double 
     const Colour& colour = i == 0 ? panel.colour : kInk;
     cairo_set_source_rgb(cr, colour.r, colour.g, colour.b);
     cairo_move_to(cr, x + m.pad, y + m.pad + m.size * 0.9 + m.line * i);
-    cairo_show_text(cr, panel.lines[i].c_str());
+    show_text(cr, panel.lines[i]);
   }
   if (const SvgRaster* math = raster(panel.math, scale)) {
     const double top = y + m.pad + (panel.lines.empty() ? 0 : m.line * panel.lines.size() - 0.3 * m.line + m.gap);

@@ -12,10 +12,12 @@ packages=(
   libtomlplusplus-dev                             # scene files
   libcli11-dev                                    # command line
   libcairo2-dev fonts-dejavu-core                 # 2D overlays and their font
+  libpango1.0-dev fonts-noto-core fonts-noto-color-emoji   # ... characters DejaVu lacks (emoji, rarer scripts and signs), from Noto through Pango's fallback
   texlive-latex-base dvisvgm librsvg2-dev         # typeset equations: LaTeX -> SVG (tex/), drawn by librsvg
   pybind11-dev python3-dev python3-numpy         # the Python package (demos/python), for Debian's python3
   python3-tqdm python3-matplotlib python3-pandas  # ... its progress bar, and what its notebook plots and tabulates
   libgtest-dev                                    # tests
+  nlohmann-json3-dev                              # tests: reading the JSON the program writes (--layout-report)
   python3-pytest python3-nbconvert python3-ipykernel   # tests: the Python package, the notebook in a real kernel
   libbullet-dev                                   # benchmark peer only
   ffmpeg                                          # benchmark peer only (render_bench's naive path); impulse never runs it

@@ -8,7 +8,7 @@
 
 namespace impulse::demos {
 
-PaneLayout pane_layout(int panes, int width, int height, bool plots) {
+PaneLayout pane_layout(int panes, int width, int height, bool plots, bool captions) {
   PaneLayout layout;
   if (panes <= 1) {
     layout.width = width;
@@ -23,7 +23,7 @@ PaneLayout pane_layout(int panes, int width, int height, bool plots) {
   const double gap = 8 * scale, top = 72 * scale;                  // under the title and the clock
   const double plots_band = plots_row ? 108 * scale : 0;           // a plot and its gaps
   const double plots_column = plots && !plots_row ? 300 * scale : 0;
-  const double captions_band = rows == 1 ? 100 * scale : 0;        // two lines of caption, under one row
+  const double captions_band = rows == 1 || captions ? 100 * scale : 0;  // two lines of caption
   const double room_width = width - plots_column - (columns + 1) * gap;
   const double room_height = height - top - plots_band - captions_band - rows * gap;
   const double pane_width = std::min(room_width / columns, room_height / rows * width / height);
@@ -49,10 +49,10 @@ render::Colour pane_colour(int pane) {
   return colours[pane % 4];
 }
 
-Film::Film(const std::vector<Pane>& panes, int width, int height, const Shots& shots) : panes_(panes), frame_height_(height) {
+Film::Film(const std::vector<Pane>& panes, int width, int height, const Shots& shots) : panes_(panes) {
   if (panes.empty() || panes.size() > 4) throw std::invalid_argument("a video shows one to four scenes");
   const Scene& first = *panes.front().scene;
-  layout_ = pane_layout(int(panes.size()), width, height, !first.overlay.plots.empty());
+  layout_ = pane_layout(int(panes.size()), width, height, !first.overlay.plots.empty(), !first.captions.empty());
   std::vector<const Scene*> scenes;
   for (const Pane& pane : panes) scenes.push_back(pane.scene);
   films_ = SceneFilm::together(scenes, layout_.width, layout_.height, shots);
@@ -95,34 +95,18 @@ void Film::next(FilmPicture& picture) {
   }
 }
 
-// A pane's panel moved to where the pane is; one in a named place to that corner of the pane (the
-// painter stacks only the frame's), the bottom left above the pane's name.
-render::OverlayPanel Film::into_pane(render::OverlayPanel panel, const render::Vec2f& origin, float scale) const {
-  const float margin = 10 * scale, width = float(layout_.width), height = float(layout_.height);
-  const float name = 30 * scale;
-  using Place = render::PanelPlace;
-  switch (panel.place) {
-    case Place::at_corner: panel.corner += origin; return panel;
-    case Place::top_left: panel.corner = {margin, margin}; panel.align = {0, 0}; break;
-    case Place::top_right: panel.corner = {width - margin, margin}; panel.align = {1, 0}; break;
-    case Place::bottom_left: panel.corner = {margin, height - name}; panel.align = {0, 1}; break;
-    case Place::bottom_right: panel.corner = {width - margin, height - margin}; panel.align = {1, 1}; break;
-    case Place::bottom: panel.corner = {width / 2, height - margin}; panel.align = {0.5f, 1}; break;
-  }
-  panel.corner += origin;
-  panel.place = Place::at_corner;
-  return panel;
-}
-
-// The first pane's overlay for the whole frame; every pane's labels moved to where the pane is,
-// its name at its bottom left, and each plot's curves of every pane on the first pane's axes.
+// The first pane's overlay for the whole frame; every pane's labels, panels and bodies moved to
+// where the pane is and kept inside it, its name in it, and each plot's curves of every pane on
+// the first pane's axes.
 void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay) const {
-  const float scale = float(frame_height_) / 720.0f;  // as the painter's
   std::vector<render::OverlayLabel> labels;
   std::vector<render::Plot> plots;
   std::vector<render::OverlayPanel> panels;
+  std::vector<render::OverlayPane> panes;
+  std::vector<render::OverlayBody> bodies;
+  std::vector<render::ScreenBox> paths;
   for (size_t i = 0; i < pictures.size(); ++i) {
-    const render::Overlay& pane = pictures[i].overlay;
+    render::Overlay& pane = pictures[i].overlay;
     const render::Vec2f origin = layout_.origins[i].cast<float>();
     for (render::OverlayLabel label : pane.labels) {
       label.anchor += origin;
@@ -130,11 +114,26 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
         segment.from += origin;
         segment.to += origin;
       }
+      label.pane = int(i);
       labels.push_back(std::move(label));
     }
-    for (const render::OverlayPanel& panel : pane.panels) panels.push_back(into_pane(panel, origin, scale));
-    // Inside its bottom left corner, clear of the title and legend over the first pane's top.
-    labels.push_back({origin + render::Vec2f(-2 * scale, float(layout_.height) - 4 * scale), panes_[i].label, pane_colour(int(i)), {}});
+    for (render::OverlayPanel panel : pane.panels) {
+      if (panel.place == render::PanelPlace::at_corner) panel.corner += origin;
+      panel.pane = int(i);
+      panels.push_back(std::move(panel));
+    }
+    for (render::OverlayBody& body : pane.bodies) {
+      body.pane = int(i);
+      body.box.x += origin.x();
+      body.box.y += origin.y();
+      bodies.push_back(std::move(body));
+    }
+    for (render::ScreenBox path : pane.body_paths) {
+      path.x += origin.x();
+      path.y += origin.y();
+      paths.push_back(path);
+    }
+    panes.push_back({{origin.x(), origin.y(), float(layout_.width), float(layout_.height)}, panes_[i].label, pane_colour(int(i))});
     for (size_t k = 0; k < pane.plots.size(); ++k) {
       if (k == plots.size()) plots.push_back({pane.plots[k].title, pane.plots[k].unit, pane.plots[k].x_end, pane.plots[k].x_start, 0, 0, {}});
       render::Plot& plot = plots[k];
@@ -151,6 +150,9 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
   overlay.panels = std::move(panels);
   overlay.plots = std::move(plots);
   overlay.plots_row_top = layout_.plots_row_top;
+  overlay.panes = std::move(panes);
+  overlay.bodies = std::move(bodies);
+  overlay.body_paths = std::move(paths);
   if (panes_.size() == 3) {  // the captions in the grid's empty cell, clear of the panes
     overlay.captions_left = float(layout_.origins[1].x());
     overlay.captions_right = float(layout_.origins[1].x() + layout_.width);

@@ -2,8 +2,9 @@
 // side in panes (a comparison), each simulated once, their worlds stepped together and shown at
 // the same simulated moments with the same camera (SceneFilm::together). The first scene sets the
 // playback, duration and frame rate; its title, clock, legend and captions are the whole frame's;
-// each pane carries a label naming what sets it apart (bottom left, in its colour), and the plots draw every
-// pane's curve on one set of axes in the panes' colours.
+// each pane carries a label naming what sets it apart (inside it, bottom left where free, in its
+// colour), its labels and equation panels stay inside it, and the plots draw every pane's curve
+// on one set of axes in the panes' colours.
 #pragma once
 #include "demos/film/scene_film.h"
 #include "render/overlay.h"
@@ -24,14 +25,14 @@ struct Pane {
 // Where the panes go in a width x height frame: two side by side, three or four in a grid of two
 // columns, each of the frame's aspect, under a band for the title and clock. Under one row of
 // panes go the plots, in a row, and a band left for the captions; with two rows the plots take
-// the column at the right.
+// the column at the right, and a band is left for the captions if there are any.
 struct PaneLayout {
   int width = 0;                          // of each pane, pixels
   int height = 0;
   std::vector<Eigen::Vector2i> origins;   // each pane's top-left corner in the frame
   float plots_row_top = -1.0f;            // the plots' row (render::Overlay::plots_row_top)
 };
-PaneLayout pane_layout(int panes, int width, int height, bool plots);
+PaneLayout pane_layout(int panes, int width, int height, bool plots, bool captions);
 
 render::Colour pane_colour(int pane);  // the label's and the plots' colour of each pane
 
@@ -63,10 +64,8 @@ class Film {
 
  private:
   void compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay) const;
-  render::OverlayPanel into_pane(render::OverlayPanel panel, const render::Vec2f& origin, float scale) const;
 
   std::vector<Pane> panes_;
-  int frame_height_;
   PaneLayout layout_;
   std::vector<std::unique_ptr<SceneFilm>> films_;
   std::vector<ScenePicture> pictures_;  // each pane's, reused frame to frame

@@ -1,7 +1,9 @@
 #include "demos/film/frame_overlay.h"
 
+#include "demos/film/body_boxes.h"
 #include "demos/film/captions.h"
 #include "demos/film/impulse_label.h"
+#include "render/flat_arrows.h"
 
 #include <cmath>
 #include <cstdio>
@@ -71,10 +73,7 @@ void FrameOverlay::add_label(const FrameState& state, const render::CameraView& 
   if (!pixels) return;
   render::OverlayLabel& label = overlay.labels.emplace_back(render::OverlayLabel{*pixels, text, colour, {}});
   if (state.arrows == nullptr) return;
-  for (const render::ArrowItem& arrow : *state.arrows) {
-    const auto from = view.to_pixels(arrow.origin), to = view.to_pixels(arrow.origin + arrow.direction);
-    if (from && to) label.avoid.push_back({*from, *to});
-  }
+  for (const render::ArrowItem& arrow : *state.arrows) render::append_flat_arrow_outline(arrow, view, label.avoid);
 }
 
 void FrameOverlay::make(const FrameState& state, const PlotRecorder& plots, render::Overlay& overlay) const {
@@ -97,6 +96,9 @@ void FrameOverlay::make(const FrameState& state, const PlotRecorder& plots, rend
   } else {
     overlay.plots.clear();
   }
+  overlay.bodies.clear();
+  add_body_boxes(*state.bodies, *state.poses, view, overlay.bodies);
+  overlay.body_paths = body_paths_;
 }
 
 }  // namespace impulse::demos

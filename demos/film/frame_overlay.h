@@ -35,6 +35,8 @@ class FrameOverlay {
   // Typesets every equation the frames will show with these impacts (the samples'), before any
   // frame is drawn: LiveEquations::prepare.
   void prepare(const std::vector<const ImpactNumbers*>& impacts) const { equations_.prepare(impacts); }
+  // Where the moving bodies go over the whole film (BodyPaths), given to every frame's overlay.
+  void set_body_paths(std::vector<render::ScreenBox> paths) { body_paths_ = std::move(paths); }
   // Fills `overlay` (reusing its memory) for the frame.
   void make(const FrameState& state, const PlotRecorder& plots, render::Overlay& overlay) const;
 
@@ -49,6 +51,7 @@ class FrameOverlay {
   int label_body_ = -1;   // -1: the largest anywhere
   LiveEquations equations_;
   std::string plot_body_name_;
+  std::vector<render::ScreenBox> body_paths_;
 };
 
 }  // namespace impulse::demos

@@ -7,6 +7,7 @@
 #include "demos/film/film.h"
 #include "demos/film/frame_pipeline.h"
 #include "demos/film/handoff_queue.h"
+#include "demos/film/layout_report.h"
 #include "render/overlay_painter.h"
 #include "render/part_file.h"
 #include "render/png_io.h"
@@ -179,11 +180,14 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   // The output first: a path that cannot be written is refused before any simulation.
   std::unique_ptr<render::VideoEncoder> encoder;
   if (!options.video_path.empty()) encoder = std::make_unique<render::VideoEncoder>(options.video_path, video);
+  std::unique_ptr<LayoutReport> layout_report;
+  if (!options.layout_report_path.empty())
+    layout_report = std::make_unique<LayoutReport>(options.layout_report_path, video.width, video.height);
   Shots shots;
   shots.stills = options.moments;
   shots.stills_at_impacts = options.moments_at_impacts;
   const bool stills_only = !shots.stills.empty() || shots.stills_at_impacts;
-  shots.video_frames = encoder || !options.poster_path.empty() ||
+  shots.video_frames = encoder || layout_report || !options.poster_path.empty() ||
                        (!options.png_directory.empty() && (!stills_only || !options.png_frames.empty() || options.png_spread > 1));
   // (without a video, poster or frame PNGs, the frames are simulated but not drawn)
   Film film(panes, video.width, video.height, shots);
@@ -205,6 +209,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
       ++frames_finished;
       return;
     }
+    if (layout_report) layout_report->add(job.video_frame, painter.layout(), job.overlay.bodies);
     if (wants_png(options, job.video_frame, film.frame_count()))
       render::write_png(frame_file(options.png_directory, job.video_frame), job.frame);
     if (!options.poster_path.empty() && job.video_frame == poster) poster_frame = job.frame;
@@ -257,6 +262,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   pipeline.finish();
   if (options.progress) options.progress(film.picture_count(), film.picture_count());  // every frame finished
   if (encoder) encoder->finish();
+  if (layout_report) layout_report->commit();
   if (encoder && !scene.captions.empty()) write_captions(scene, film, captions_path(options.video_path));
   if (encoder) write_chapters(scene, film, chapters_path(options.video_path));
   if (!options.poster_path.empty() && !poster_frame.rgba.empty()) render::write_png(options.poster_path, poster_frame);

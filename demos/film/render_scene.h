@@ -28,6 +28,8 @@ struct RenderOptions {
   std::function<void(double time, const render::Frame& frame, const std::vector<BodyPose>& poses)> on_still;
   std::string poster_path;       // .png of a frame where something happens (SceneFilm::poster_frame), written once
                                  // the video is complete; empty: none
+  std::string layout_report_path;  // .json: each video frame's overlay layout (layout_report.h), written
+                                   // once the video is complete; empty: none
   // Called after each frame is drawn, with the frames finished and the frame count.
   std::function<void(int frames_done, int frame_count)> progress;
   render::RendererSettings renderer;

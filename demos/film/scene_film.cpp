@@ -1,5 +1,6 @@
 #include "demos/film/scene_film.h"
 
+#include "demos/film/body_boxes.h"
 #include "demos/film/impulse_label.h"
 #include "demos/film/moments.h"
 
@@ -74,6 +75,7 @@ void SceneFilm::develop(int width, int height, const TakeSummary& summary) {
   }
   scales_ = arrow_scales(scene_, summary);
   overlay_maker_.emplace(scene_, summary, scales_, width, height);
+  overlay_maker_->set_body_paths(body_paths(width, height));
   std::vector<const ImpactNumbers*> impacts;
   for (const FrameSample& sample : samples_) impacts.push_back(&sample.impact);
   overlay_maker_->prepare(impacts);
@@ -86,6 +88,23 @@ namespace {
 double still_after(double impact) { return std::ceil(impact * 1000 - 1e-6) / 1000; }
 
 }  // namespace
+
+// Every moment's bodies on screen, the camera moving on as next() will move it.
+std::vector<render::ScreenBox> SceneFilm::body_paths(int width, int height) const {
+  BodyPaths paths(width, height);
+  CameraPath camera_path = camera_path_;
+  const int followed = camera_path.followed_body();
+  std::vector<render::OverlayBody> boxes;
+  for (size_t i = 0; i < moments_.size(); ++i) {
+    const std::vector<BodyPose>& poses = samples_[i].poses;
+    const render::Camera camera = camera_path.at(moments_[i].time, followed >= 0 ? poses[followed].position : physics::Vec3::Zero());
+    boxes.clear();
+    add_body_boxes(bodies_, poses, render::make_camera_view(camera, width, height), boxes);
+    for (const render::OverlayBody& body : boxes)
+      if (body.moving) paths.add(body.box);
+  }
+  return paths.boxes();
+}
 
 void SceneFilm::add_moment(const Moment& moment, double video_time) {
   moments_.push_back(moment);

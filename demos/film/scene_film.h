@@ -92,6 +92,8 @@ class SceneFilm {
   // Once shot: the arrow scales and the overlay's axes that `summary` (the run's, or the largest of
   // films shown together) fixes.
   void develop(int width, int height, const TakeSummary& summary);
+  // Where the moving bodies go on screen over the film (render::Overlay::body_paths).
+  std::vector<render::ScreenBox> body_paths(int width, int height) const;
 
   const Scene& scene_;
   WorldTake take_;

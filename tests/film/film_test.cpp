@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <map>
 #include <string>
 #include <utility>
 
@@ -61,15 +60,16 @@ TEST(Film, PanesShareTheirMomentsAndSlowDownAroundAnyPanesImpact) {
     ++frames;
   }
   EXPECT_EQ(frames, together.frame_count());
-  // Each pane is labelled with its name inside its bottom-left corner.
-  std::map<std::string, render::Vec2f> labels;
-  for (const render::OverlayLabel& label : picture.overlay.labels) labels[label.text] = label.anchor;
-  ASSERT_EQ(labels.count("low"), 1u);
-  ASSERT_EQ(labels.count("high"), 1u);
+  // Each pane is named, and its box is where the layout put it (the painter writes the name inside).
+  ASSERT_EQ(picture.overlay.panes.size(), 2u);
   for (const auto& [name, pane] : {std::pair{"low", 0}, std::pair{"high", 1}}) {
+    const render::OverlayPane& overlay_pane = picture.overlay.panes[pane];
+    EXPECT_EQ(overlay_pane.label, name);
     const Eigen::Vector2i& origin = together.layout().origins[pane];
-    EXPECT_NEAR(labels[name].x(), origin.x(), 10) << name;
-    EXPECT_NEAR(labels[name].y(), origin.y() + 0.75 * together.layout().height, together.layout().height / 4) << name;
+    EXPECT_EQ(overlay_pane.box.x, float(origin.x())) << name;
+    EXPECT_EQ(overlay_pane.box.y, float(origin.y())) << name;
+    EXPECT_EQ(overlay_pane.box.w, float(together.layout().width)) << name;
+    EXPECT_EQ(overlay_pane.box.h, float(together.layout().height)) << name;
   }
 }
 

@@ -21,33 +21,37 @@ bool overlap(const PaneLayout& layout, size_t a, size_t b) {
 }
 
 TEST(PaneLayout, TwoSideBySideThreeOrFourInAGridEachOfTheFramesShape) {
-  const PaneLayout one = demos::pane_layout(1, 1280, 720, true);
+  const PaneLayout one = demos::pane_layout(1, 1280, 720, true, true);
   EXPECT_EQ(one.width, 1280);
   EXPECT_EQ(one.height, 720);
-  for (const bool plots : {false, true}) {
-    for (const int panes : {2, 3, 4}) {
-      SCOPED_TRACE(std::to_string(panes) + (plots ? " panes, plots" : " panes"));
-      const PaneLayout layout = demos::pane_layout(panes, 1280, 720, plots);
-      ASSERT_EQ(layout.origins.size(), size_t(panes));
-      EXPECT_NEAR(double(layout.width) / layout.height, 1280.0 / 720.0, 0.02);
-      EXPECT_GE(layout.width, 460);  // more than a third of the frame
-      for (size_t i = 0; i < layout.origins.size(); ++i) {
-        const Eigen::Vector2i& at = layout.origins[i];
-        EXPECT_GE(at.x(), 0);
-        EXPECT_GE(at.y(), 72);  // under the title and the clock
-        EXPECT_LE(at.x() + layout.width, plots && panes > 2 ? 1280 - 300 : 1280);  // the plots' column
-        EXPECT_LE(at.y() + layout.height, 720);
-        for (size_t j = 0; j < i; ++j) EXPECT_FALSE(overlap(layout, i, j)) << i << " and " << j;
-      }
-      EXPECT_EQ(layout.origins[1].y(), layout.origins[0].y());  // side by side
-      if (panes > 2) {
-        EXPECT_GT(layout.origins[2].y(), layout.origins[0].y());
-      }
-      if (plots && panes == 2) {  // a row of plots (88 px high) under the panes
-        EXPECT_GE(layout.plots_row_top, layout.origins[0].y() + layout.height);
-        EXPECT_LE(layout.plots_row_top + 88, 720);
-      } else {
-        EXPECT_LT(layout.plots_row_top, 0);
+  for (const bool captions : {false, true}) {
+    for (const bool plots : {false, true}) {
+      for (const int panes : {2, 3, 4}) {
+        SCOPED_TRACE(std::to_string(panes) + (plots ? " panes, plots" : " panes") + (captions ? ", captions" : ""));
+        const PaneLayout layout = demos::pane_layout(panes, 1280, 720, plots, captions);
+        ASSERT_EQ(layout.origins.size(), size_t(panes));
+        EXPECT_NEAR(double(layout.width) / layout.height, 1280.0 / 720.0, 0.02);
+        EXPECT_GE(layout.width, 460);  // more than a third of the frame
+        // Under one row, or with captions, a band of two caption lines (100 px) is left free.
+        const int bottom = panes == 2 || captions ? 720 - 100 : 720;
+        for (size_t i = 0; i < layout.origins.size(); ++i) {
+          const Eigen::Vector2i& at = layout.origins[i];
+          EXPECT_GE(at.x(), 0);
+          EXPECT_GE(at.y(), 72);  // under the title and the clock
+          EXPECT_LE(at.x() + layout.width, plots && panes > 2 ? 1280 - 300 : 1280);  // the plots' column
+          EXPECT_LE(at.y() + layout.height, bottom);
+          for (size_t j = 0; j < i; ++j) EXPECT_FALSE(overlap(layout, i, j)) << i << " and " << j;
+        }
+        EXPECT_EQ(layout.origins[1].y(), layout.origins[0].y());  // side by side
+        if (panes > 2) {
+          EXPECT_GT(layout.origins[2].y(), layout.origins[0].y());
+        }
+        if (plots && panes == 2) {  // a row of plots (88 px high) under the panes
+          EXPECT_GE(layout.plots_row_top, layout.origins[0].y() + layout.height);
+          EXPECT_LE(layout.plots_row_top + 88, bottom);
+        } else {
+          EXPECT_LT(layout.plots_row_top, 0);
+        }
       }
     }
   }

@@ -80,7 +80,7 @@ TEST(Compare, PanesDifferWhereTheSettingDiffersAndAgreeWhereItDoesNot) {
   ASSERT_EQ(decoded.height, 540);
   ASSERT_EQ(decoded.frames.size(), 30u);
   EXPECT_EQ(decoded.comment, "pane 1: --set body[varied].restitution=0.1; pane 2: --set body[varied].restitution=0.9");
-  const demos::PaneLayout layout = demos::pane_layout(2, 960, 540, false);
+  const demos::PaneLayout layout = demos::pane_layout(2, 960, 540, false, false);
   // 0.55 s: both balls just bounced, their arrows drawn; 0.95 s: the bouncy one near its top.
   for (const int frame : {11, 19}) {
     EXPECT_LT(differing_pixels(decoded.frames[frame], layout, false), 20) << "frame " << frame;

@@ -1,11 +1,13 @@
 // The 2D overlay: the frame is untouched where the layer paints nothing; the label sits beside its
-// arrow's tip (captions in whole scenes: film_caption_test.cpp).
+// arrow's tip; every element inside the box it reports (captions in whole scenes: caption_test.cpp).
+#include "render/overlay_layout.h"
 #include "render/overlay_painter.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <set>
 #include <string>
 
 namespace impulse {
@@ -128,6 +130,76 @@ TEST(Overlay, AWordWiderThanItsBoxIsSplitBetweenCharacters) {
     dark_rows += row_dark;
   }
   EXPECT_GT(dark_rows, 20) << "a box of several lines";
+}
+
+// Every kind of element at once, in a comparison of two panes over a small frame: each is painted
+// inside the box the painter reports (what --layout-report writes), the boxes are inside the
+// frame and apart, each pane's name inside its pane, and nothing is painted outside the boxes.
+TEST(Overlay, EveryElementIsPaintedInsideItsReportedBoxAndNoTwoOverlap) {
+  constexpr int kW = 640, kH = 360;
+  render::Overlay overlay;
+  overlay.title = "Two panes, every element";
+  overlay.clock = "t = 1.25 s";
+  overlay.playback = "slow motion \u00d70.20";
+  overlay.captions = {{"The first caption, long enough to wrap over two lines of the frame's width.", 1.0f},
+                      {"The second caption.", 0.6f}};
+  overlay.legend = {{{0.0f, 0.0f, 0.0f}, "contact point", 0.0f, true}, {{0.0f, 0.45f, 0.7f}, "normal impulse: 1 N\u00b7s", 40.0f}};
+  render::Plot energy{"kinetic energy", "J", 2.0f, 0.0f, 0.0f, 5.0f, {{{0.9f, 0.6f, 0.0f}, {{0.0f, 4.0f}, {1.0f, 2.0f}}}}};
+  overlay.plots = {energy, energy};
+  overlay.plots_row_top = 250;
+  overlay.panes = {{{8, 60, 300, 170}, "e = 0.2", {0.0f, 0.45f, 0.7f}}, {{332, 60, 300, 170}, "e = 0.8", {0.8f, 0.4f, 0.0f}}};
+  overlay.labels = {{render::Vec2f(150, 150), "J = 2.41 N\u00b7s", {0.0f, 0.45f, 0.7f}, {}, 0}};
+  render::OverlayPanel panel;
+  panel.place = render::PanelPlace::top_right;
+  panel.lines = {"eq. 8", "J = 3.40 N\u00b7s"};
+  panel.pane = 1;
+  overlay.panels = {panel};
+  overlay.bodies = {{0, "ball", {140, 160, 30, 30}, true}};
+
+  const uint8_t background = 90;
+  render::Frame frame{kW, kH, std::vector<uint8_t>(size_t(kW) * kH * 4, background)};
+  render::OverlayPainter painter(kW, kH);
+  painter.paint(overlay, frame);
+  const render::PaintedLayout& layout = painter.layout();
+  EXPECT_TRUE(layout.dropped.empty());
+  std::set<std::string> names;
+  for (const render::PaintedElement& element : layout.elements) names.insert(element.name);
+  EXPECT_EQ(names, (std::set<std::string>{"title", "clock", "caption 1", "caption 2", "legend", "plot 1", "plot 2",
+                                          "pane label 1", "pane label 2", "panel 1", "label 1"}));
+  for (size_t i = 0; i < layout.elements.size(); ++i) {
+    const render::ScreenBox& box = layout.elements[i].box;
+    EXPECT_TRUE(render::contains({0, 0, float(kW), float(kH)}, box)) << layout.elements[i].name;
+    for (size_t j = 0; j < i; ++j)
+      EXPECT_FALSE(render::overlaps(box, layout.elements[j].box)) << layout.elements[i].name << " and " << layout.elements[j].name;
+    if (layout.elements[i].name.rfind("pane label ", 0) == 0) {
+      const int pane = layout.elements[i].name.back() - '1';
+      EXPECT_TRUE(render::contains(overlay.panes[pane].box, box)) << layout.elements[i].name;
+    }
+    if (layout.elements[i].name == "panel 1") {
+      EXPECT_TRUE(render::contains(overlay.panes[1].box, box));
+    }
+    if (layout.elements[i].name == "label 1") {
+      EXPECT_FALSE(render::overlaps(box, overlay.bodies[0].box));
+    }
+  }
+  // A text's halo and anti-aliased edges reach a few pixels past its box; nothing further.
+  const float reach = 2 + 4 * kH / 720.0f;
+  int painted = 0, outside = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const uint8_t* p = &frame.rgba[(size_t(y) * kW + x) * 4];
+      if (p[0] == background && p[1] == background && p[2] == background) continue;
+      ++painted;
+      bool inside = false;
+      for (const render::PaintedElement& element : layout.elements) {
+        const render::ScreenBox& b = element.box;
+        inside |= x + 1 > b.x - reach && x < b.right() + reach && y + 1 > b.y - reach && y < b.bottom() + reach;
+      }
+      outside += !inside;
+    }
+  }
+  EXPECT_GT(painted, 10000);
+  EXPECT_EQ(outside, 0) << "pixels painted outside every reported box";
 }
 
 }  // namespace

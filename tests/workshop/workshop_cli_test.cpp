@@ -53,7 +53,7 @@ std::string text_of(const fs::path& path) { return test::read(path.string()); }
 // over all but the bottom strip with the pane's label. Panes that show the same thing differ by
 // about 0.5 (the encoder's rounding); a body in another place, by 5 or more.
 double pane_difference(const render::Frame& frame) {
-  const demos::PaneLayout layout = demos::pane_layout(2, frame.width, frame.height, false);
+  const demos::PaneLayout layout = demos::pane_layout(2, frame.width, frame.height, false, false);
   double total = 0;
   long count = 0;
   for (int y = 0; y < layout.height * 4 / 5; ++y)
