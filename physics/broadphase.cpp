@@ -83,7 +83,7 @@ void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, const std::vector<ui
   // The sweep, shared when the team has threads and there are enough entries: a thread takes the
   // next run of entries as it finishes one (how much a run costs varies: a pyramid's wide bottom
   // rows have more neighbours than its top). Which thread finds which pair varies; the pairs do not.
-  const int threads = team != nullptr && n >= kMinBodiesPerThread * 2 ? std::min(team->size(), 2) : 1;
+  const int threads = team != nullptr && n >= kMinBodiesPerThread * 2 ? team->size() : 1;
   found_.resize(threads);
   for (Found& found : found_) found.pairs.clear();
   std::atomic<int> next_run{0};

@@ -30,7 +30,7 @@ class SoftStep {
                IntegratePosition&& integrate_position);
 
  private:
-  // Per thread that sweeps (two at most) and per parity of the sweep's epoch: the last sweep's
+  // Per thread and per parity of the sweep's epoch: the last sweep's
   // epoch in which one of its manifolds bounced (bounce_flag). Two per thread, because a thread
   // that has left a pass's barrier may already write the next pass's flag while another still
   // reads this pass's: with one flag it could overwrite it, the other would read "nothing
@@ -41,7 +41,8 @@ class SoftStep {
   struct alignas(64) BounceEpoch {
     std::atomic<uint64_t> value{0};
   };
-  std::unique_ptr<BounceEpoch[]> bounced_ = std::make_unique<BounceEpoch[]>(4);
+  std::unique_ptr<BounceEpoch[]> bounced_;
+  int bounced_threads_ = 0;
   std::atomic<uint64_t>& bounce_flag(int thread, uint64_t epoch) { return bounced_[2 * thread + (epoch & 1)].value; }
 };
 
@@ -56,6 +57,10 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
   const uint64_t epoch = schedule.new_epochs(4 + kImpactPasses);
   const uint64_t first_pass = epoch + 2, take_back = first_pass + kImpactPasses, relax = take_back + 1;
   const bool parallel = schedule.parallel();
+  if (bounced_threads_ < team.size()) {  // the flags only grow: a sweep's epoch is newer than any value
+    bounced_ = std::make_unique<BounceEpoch[]>(2 * team.size());
+    bounced_threads_ = team.size();
+  }
   auto meet = [&] { if (parallel) team.barrier(); };
   // The joints are solved by the first thread alone, between the contacts' sweeps.
   auto joint_stage = [&](int thread, auto&& stage) {
@@ -66,8 +71,9 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
   // Whether a thread bounced something in the sweep of `sweep_epoch` (read after a barrier: every
   // thread reads the same and takes the same way).
   auto bounced_in = [&](uint64_t sweep_epoch) {
-    return bounce_flag(0, sweep_epoch).load(std::memory_order_relaxed) == sweep_epoch ||
-           bounce_flag(1, sweep_epoch).load(std::memory_order_relaxed) == sweep_epoch;
+    for (int thread = 0; thread < team.size(); ++thread)
+      if (bounce_flag(thread, sweep_epoch).load(std::memory_order_relaxed) == sweep_epoch) return true;
+    return false;
   };
   schedule.run(team, [&](int thread) {
     schedule.slot_share(thread, integrate_velocity);
@@ -78,7 +84,7 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
     joint_stage(thread, [&] { joints->solve(bodies, 1 / h, true); });
     bool bounced = false;
     schedule.sweep_share(thread, epoch + 1, [&](int place, int width) { bounced |= contacts.solve_manifolds(place, width, bodies, 1 / h, true); });
-    if (bounced) bounce_flag(thread, epoch + 1).store(epoch + 1, std::memory_order_relaxed);  // only threads 0 and 1 have manifolds
+    if (bounced) bounce_flag(thread, epoch + 1).store(epoch + 1, std::memory_order_relaxed);
     meet();
     // The impacts pass on: a bounce sets bodies moving into their neighbours within the same
     // sub-step, which the sweep above may have visited before it. Pass after pass of bounces

@@ -6,9 +6,12 @@ namespace impulse::physics {
 
 namespace {
 
-// Below this many items a sweep takes a few microseconds: waking helpers would cost as much, and
-// the natural order is kept (but for partners).
+// Below this many items a part takes a few microseconds to sweep: it is not cut, and a set this
+// small keeps its natural order (but for partners) and one thread.
 constexpr size_t kMinDissectedItems = 256;
+// Cuts below the whole set, at most: up to 2^3 leaves, so up to eight threads share a sweep. Fixed,
+// whatever the thread count: the order must not depend on it.
+constexpr int kDissectionLevels = 3;
 // How far ahead in its part an item's partner may be: near, so that the sweep keeps its order and
 // its place in memory roughly.
 constexpr size_t kPartnerReach = 16;
@@ -22,6 +25,68 @@ Vec3 item_position(const SweepItem& item) {
   return item.a >= 0 ? item.position_a : item.position_b;
 }
 
+// The dissection tree as parts numbered in the sweep's order (depth first: a node's crossing
+// items, its left subtree, its right subtree; a leaf's free items, then those that move a body of
+// a crossing item), and for each part the leaf whose thread sweeps it (for crossing items, the
+// first leaf of the node's subtree). The first leaf is not split: its thread sweeps every crossing
+// part before it anyway.
+struct Dissection {
+  const std::vector<SweepItem>& items;
+  std::vector<uint8_t> part;            // per item
+  std::vector<int> leaf_of_part;
+  std::vector<uint8_t> is_crossing;     // per part
+  std::vector<uint8_t> crossed;         // per body: moved by a crossing item
+  int leaves = 0;
+
+  Dissection(const std::vector<SweepItem>& all, int body_count) : items(all), part(all.size(), 0), crossed(body_count, 0) {}
+
+  int new_part(int leaf, bool crossing) {
+    leaf_of_part.push_back(leaf);
+    is_crossing.push_back(crossing);
+    return int(leaf_of_part.size()) - 1;
+  }
+
+  void cut(const std::vector<int>& members, int level) {
+    if (level > kDissectionLevels || members.size() < kMinDissectedItems) {
+      const int leaf = leaves++, free = new_part(leaf, false), after_crossing = new_part(leaf, false);
+      for (const int i : members) {
+        const SweepItem& item = items[i];
+        const bool waits = leaf > 0 && ((item.a >= 0 && crossed[item.a]) || (item.b >= 0 && crossed[item.b]));
+        part[i] = uint8_t(waits ? after_crossing : free);
+      }
+      return;
+    }
+    // The cut: the median of the members' positions along the axis where they spread most.
+    Vec3 low = item_position(items[members[0]]), high = low;
+    for (const int i : members) {
+      low = low.cwiseMin(item_position(items[i]));
+      high = high.cwiseMax(item_position(items[i]));
+    }
+    int axis = 0;
+    (high - low).maxCoeff(&axis);
+    std::vector<Real> keys(members.size());
+    for (size_t k = 0; k < members.size(); ++k) keys[k] = item_position(items[members[k]])[axis];
+    std::nth_element(keys.begin(), keys.begin() + keys.size() / 2, keys.end());
+    const Real median = keys[keys.size() / 2];
+    auto side = [&](const Vec3& p) { return p[axis] < median ? 1 : 2; };
+
+    const int crossing = new_part(leaves, true);
+    std::vector<int> left, right;
+    for (const int i : members) {
+      const SweepItem& item = items[i];
+      const int sides = (item.a >= 0 ? side(item.position_a) : 0) | (item.b >= 0 ? side(item.position_b) : 0);
+      if (sides == 3) {
+        part[i] = uint8_t(crossing);
+        crossed[item.a] = crossed[item.b] = 1;
+      } else {
+        (sides == 2 ? right : left).push_back(i);  // both ends still: left
+      }
+    }
+    cut(left, level + 1);
+    cut(right, level + 1);
+  }
+};
+
 }  // namespace
 
 void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, int threads) {
@@ -31,70 +96,65 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
   body_of_slot_.resize(body_count);
   for (int body = 0; body < body_count; ++body) slot_of_body_[body] = body_of_slot_[body] = body;
   lists_.clear();
-  enum Part : uint8_t { crossing, left, right, right_after_crossing };
-  std::vector<uint8_t> part(count, left);
-  if (count < kMinDissectedItems) {
-    order_parts(items, part);
-    return;
-  }
+  team_size_ = threads;
+  Dissection dissection(items, body_count);
+  std::vector<int> all(count);
+  for (size_t i = 0; i < count; ++i) all[i] = int(i);
+  dissection.cut(all, 1);
+  order_parts(items, dissection.part);
+  const int sharing = std::min(threads, dissection.leaves);
+  if (sharing < 2) return;
 
-  // The cut: the median of the items' positions along the axis where they spread most.
-  Vec3 low = item_position(items[0]), high = low;
-  std::vector<Vec3> positions(count);
-  for (size_t i = 0; i < count; ++i) {
-    positions[i] = item_position(items[i]);
-    low = low.cwiseMin(positions[i]);
-    high = high.cwiseMax(positions[i]);
+  // Runs of consecutive leaves, as even in items as they can be: a leaf goes to the thread in
+  // whose share of the items its middle falls.
+  std::vector<size_t> leaf_items(dissection.leaves, 0);
+  for (size_t i = 0; i < count; ++i) ++leaf_items[dissection.leaf_of_part[dissection.part[i]]];
+  std::vector<int> thread_of_leaf(dissection.leaves);
+  size_t before = 0;
+  for (int leaf = 0; leaf < dissection.leaves; ++leaf) {
+    thread_of_leaf[leaf] = int(std::min<size_t>(sharing - 1, (2 * before + leaf_items[leaf]) * sharing / (2 * count)));
+    before += leaf_items[leaf];
   }
-  int axis = 0;
-  (high - low).maxCoeff(&axis);
-  std::vector<Real> keys(count);
-  for (size_t i = 0; i < count; ++i) keys[i] = positions[i][axis];
-  std::nth_element(keys.begin(), keys.begin() + count / 2, keys.end());
-  const Real cut = keys[count / 2];
+  std::vector<int> thread_of_part(dissection.leaf_of_part.size());
+  for (size_t p = 0; p < thread_of_part.size(); ++p) thread_of_part[p] = thread_of_leaf[dissection.leaf_of_part[p]];
+  share(items, dissection.part, thread_of_part, dissection.is_crossing, sharing);
+}
 
-  // Crossing first, then left, then right, each in the natural order; and of the right ones, those
-  // that move a body of a crossing one last: the second thread, which sweeps the right ones, then
-  // reaches them when the first has long solved the crossing ones, and need not wait.
-  auto side = [&](const Vec3& p) { return p[axis] < cut ? 1 : 2; };
-  std::vector<uint8_t> crossed(body_count, 0);
-  for (size_t i = 0; i < count; ++i) {
-    const SweepItem& item = items[i];
-    const int sides = (item.a >= 0 ? side(item.position_a) : 0) | (item.b >= 0 ? side(item.position_b) : 0);
-    part[i] = sides == 3 ? crossing : sides == 2 ? right : left;  // both ends still: left
-    if (part[i] == crossing) crossed[item.a] = crossed[item.b] = 1;
-  }
-  for (size_t i = 0; i < count; ++i)
-    if (part[i] == right && ((items[i].a >= 0 && crossed[items[i].a]) || (items[i].b >= 0 && crossed[items[i].b]))) part[i] = right_after_crossing;
-  order_parts(items, part);
-  if (threads < 2) return;
-
+// Each place's owner, the places before it that move its bodies, and whether another thread waits
+// for it; each thread's bodies get consecutive slots.
+void SweepSchedule::share(const std::vector<SweepItem>& items, const std::vector<uint8_t>& part,
+                          const std::vector<int>& thread_of_part, const std::vector<uint8_t>& is_crossing, int threads) {
+  const size_t count = items.size();
+  const int body_count = int(slot_of_body_.size());
   before_a_.resize(count);
   before_b_.resize(count);
   owner_.resize(count);
   std::vector<int> last(body_count, -1);
+  // A body goes with the thread of its leaf: of a leaf's item that moves it, else of the first
+  // crossing item that does (in none: the first thread).
+  std::vector<int> body_owner(body_count, -1);
   for (size_t place = 0; place < count; ++place) {
     const SweepItem& item = items[order_[place]];
+    const int owner = thread_of_part[part[order_[place]]];
     before_a_[place] = item.a >= 0 ? last[item.a] : -1;
     before_b_[place] = item.b >= 0 ? last[item.b] : -1;
-    if (item.a >= 0) last[item.a] = int(place);
-    if (item.b >= 0) last[item.b] = int(place);
-    owner_[place] = part[order_[place]] >= right ? 1 : 0;
-  }
-  // Each side's bodies get consecutive slots (those in no manifold go with the first side).
-  std::vector<uint8_t> body_owner(body_count, 0);
-  for (const SweepItem& item : items) {
-    if (item.a >= 0) body_owner[item.a] = side(item.position_a) == 2;
-    if (item.b >= 0) body_owner[item.b] = side(item.position_b) == 2;
+    for (const int body : {item.a, item.b}) {
+      if (body < 0) continue;
+      last[body] = int(place);
+      if (body_owner[body] < 0 || !is_crossing[part[order_[place]]]) body_owner[body] = owner;
+    }
+    owner_[place] = uint8_t(owner);
   }
   int next_slot = 0;
-  for (int owner = 0; owner < 2; ++owner) {
-    if (owner == 1) slot_split_ = next_slot;
+  slot_begin_.assign(threads + 1, 0);
+  for (int owner = 0; owner < threads; ++owner) {
+    slot_begin_[owner] = next_slot;
     for (int body = 0; body < body_count; ++body)
-      if (body_owner[body] == owner) slot_of_body_[body] = next_slot++;
+      if (std::max(body_owner[body], 0) == owner) slot_of_body_[body] = next_slot++;
   }
+  slot_begin_[threads] = next_slot;
   for (int body = 0; body < body_count; ++body) body_of_slot_[slot_of_body_[body]] = body;
-  lists_.assign(2, {});
+  lists_.assign(threads, {});
   rank_in_list_.resize(count);
   for (size_t place = 0; place < count; ++place) {
     rank_in_list_[place] = uint32_t(lists_[owner_[place]].size());
@@ -104,7 +164,10 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
   for (size_t place = 0; place < count; ++place)
     for (int before : {before_a_[place], before_b_[place]})
       if (before >= 0 && owner_[before] != owner_[place]) awaited_[before] = 1;
-  if (!progress_) progress_ = std::make_unique<Progress[]>(2);
+  if (progress_count_ < threads) {  // the counters only grow: a sweep's epoch is newer than any value
+    progress_ = std::make_unique<WaitableCounter[]>(threads);
+    progress_count_ = threads;
+  }
 }
 
 // The order: part after part, each in the items' order but for partners. An item's partner is the
@@ -142,9 +205,7 @@ void SweepSchedule::order_parts(const std::vector<SweepItem>& items, const std::
 void SweepSchedule::wait_for(int place, int thread, uint64_t epoch) const {
   if (place < 0 || owner_[place] == thread) return;
   const uint64_t target = (epoch << kEpochShift) + rank_in_list_[place] + 1;
-  const std::atomic<uint64_t>& progress = progress_[owner_[place]].value;
-  Backoff backoff;
-  while (progress.load(std::memory_order_acquire) < target) backoff.pause();
+  progress_[owner_[place]].wait_until_at_least(target, team_size_);
 }
 
 }  // namespace impulse::physics

@@ -1,14 +1,16 @@
 // The order of a Gauss-Seidel sweep over the manifolds, and how the threads of a ThreadTeam share
 // it without changing a bit of the result.
 //
-// A large set is cut in two along its longest axis (nested dissection, one level): first the
-// manifolds that join bodies on both sides, then those on the left, then those on the right (last
-// the right ones that share a body with a crossing one). The order depends on the bodies only,
-// never on the thread count, so one thread and many give the same results. Threads share the sweep
-// by parts (the crossing and left manifolds, the right ones); before each manifold a thread waits
-// until the manifolds before it in the order that move one of its bodies are done, so every body
-// receives its impulses in exactly the sweep's order. The two sides touch different bodies, and the
-// right ones that wait for crossing ones come last: the threads hardly ever wait on each other.
+// A large set is cut in two along its longest axis, and each half again, to at most three levels
+// (nested dissection: up to eight leaves). The order is the tree's, depth first: a node's crossing
+// manifolds (those that join bodies on both sides of its cut), then its left subtree, then its
+// right; in a leaf, last the manifolds that move a body of a crossing one. The tree depends on the
+// bodies only, never on the thread count, so one thread and many give the same results. Threads
+// take runs of leaves (each with the crossing manifolds of the subtrees it starts); before each
+// manifold a thread waits until the manifolds before it in the order that move one of its bodies
+// are done, so every body receives its impulses in exactly the sweep's order. Leaves touch
+// different bodies, and a leaf's manifolds that wait for crossing ones come last: the threads
+// hardly ever wait on each other. Threads beyond the leaves only meet at the barriers.
 //
 // Within each part, a manifold is followed where it can be by one a little further on with as many
 // points that moves none of its bodies: the two are solved side by side (lanes.h).
@@ -87,13 +89,12 @@ class SweepSchedule {
 
  private:
   void order_parts(const std::vector<SweepItem>& items, const std::vector<uint8_t>& part);
+  void share(const std::vector<SweepItem>& items, const std::vector<uint8_t>& part, const std::vector<int>& thread_of_part,
+             const std::vector<uint8_t>& is_crossing, int threads);
   void wait_for(int place, int thread, uint64_t epoch) const;
 
-  // How far each thread has come in the current sweep: epoch * 2^32 + places done. Each on its own
-  // cache line, written only after the places that another thread waits for.
-  struct alignas(64) Progress {
-    std::atomic<uint64_t> value{0};
-  };
+  // How far each thread has come in the current sweep (epoch * 2^32 + places done), raised only
+  // after the places that another thread waits for.
   static constexpr int kEpochShift = 32;
 
   // Indexed by place (the position in the sweep's order):
@@ -105,8 +106,10 @@ class SweepSchedule {
   std::vector<uint8_t> paired_;           // whether it is solved side by side with the next
   std::vector<std::vector<int>> lists_;   // each thread's places, in order
   std::vector<int> slot_of_body_, body_of_slot_;
-  int slot_split_ = 0;                    // the second thread's slots start here
-  std::unique_ptr<Progress[]> progress_;
+  std::vector<int> slot_begin_;           // thread t's slots are [slot_begin_[t], slot_begin_[t + 1])
+  std::unique_ptr<WaitableCounter[]> progress_;
+  int progress_count_ = 0;
+  int team_size_ = 1;                     // how long a wait spins depends on it
   uint64_t epoch_ = 0;
 };
 
@@ -128,7 +131,7 @@ void SweepSchedule::sweep_share(int thread, uint64_t epoch, Solve&& solve) const
     }
     solve(place, width);
     rank += width - 1;
-    if (awaited_[place] || awaited_[place + width - 1]) progress_[thread].value.store((epoch << kEpochShift) + rank + 1, std::memory_order_release);
+    if (awaited_[place] || awaited_[place + width - 1]) progress_[thread].raise((epoch << kEpochShift) + rank + 1);
   }
 }
 
@@ -145,11 +148,13 @@ void SweepSchedule::place_share(int thread, F&& f) const {
 
 template <class F>
 void SweepSchedule::slot_share(int thread, F&& f) const {
-  const int count = int(slot_of_body_.size());
-  const int split = parallel() ? slot_split_ : count;  // the second thread's slots start here
-  const int begin = thread == 0 ? 0 : thread == 1 ? split : count;
-  const int end = thread == 0 ? split : count;
-  for (int slot = begin; slot < end; ++slot) f(slot);
+  if (!parallel()) {
+    if (thread == 0)
+      for (int slot = 0; slot < int(slot_of_body_.size()); ++slot) f(slot);
+    return;
+  }
+  if (thread + 1 < int(slot_begin_.size()))
+    for (int slot = slot_begin_[thread]; slot < slot_begin_[thread + 1]; ++slot) f(slot);
 }
 
 }  // namespace impulse::physics

@@ -1,7 +1,6 @@
 #include "physics/thread_team.h"
 
 #include <algorithm>
-#include <chrono>
 
 namespace impulse::physics {
 
@@ -15,19 +14,56 @@ inline void cpu_pause() {
 
 using Clock = std::chrono::steady_clock;
 
-// A helper idle this long goes to sleep; waking it again costs tens of microseconds (a virtual
-// machine's idle core may even be handed back to the host), more than most pauses between jobs.
+// With a core each, a waiter spins this long before it sleeps: most waits are shorter.
 constexpr auto kSpinBeforeSleep = std::chrono::microseconds(300);
-// A waiting thread yields its core only after this long: whoever it waits for may need it.
-constexpr auto kSpinBeforeYield = std::chrono::microseconds(50);
+// With more threads than cores, a few pauses only: the awaited thread may need this core.
+constexpr int kOversubscribedSpins = 256;
+
+int hardware_threads() { return std::max(1, int(std::thread::hardware_concurrency())); }
+
+// Spins while `value` holds `old`, then sleeps on it until it changes.
+template <class T>
+void wait_while_equal(const std::atomic<T>& value, T old, int threads) {
+  SpinBudget budget(threads);
+  while (value.load(std::memory_order_acquire) == old)
+    if (!budget.spin()) value.wait(old, std::memory_order_acquire);
+}
 
 }  // namespace
 
-void Backoff::pause() {
+SpinBudget::SpinBudget(int threads) : spin_limit_(threads > hardware_threads() ? kOversubscribedSpins : 0) {}
+
+bool SpinBudget::spin() {
   cpu_pause();
-  if (++spins_ % 64 != 0) return;  // the clock is read now and then only
+  ++spins_;
+  if (spin_limit_ > 0) return spins_ < spin_limit_;
+  if (spins_ % 64 != 0) return true;  // the clock is read now and then only
   if (spins_ == 64) started_ = Clock::now();
-  else if (Clock::now() - started_ > kSpinBeforeYield) std::this_thread::yield();
+  return Clock::now() - started_ < kSpinBeforeSleep;
+}
+
+// Dekker's pattern on value_ and sleepers_ (both sequentially consistent): either the waiter's
+// load of value_ sees the raise, or raise() sees the sleeper and bumps wakes_, which the waiter
+// read before its load of value_ and sleeps on.
+void WaitableCounter::raise(uint64_t value) {
+  value_.store(value, std::memory_order_seq_cst);
+  if (sleepers_.load(std::memory_order_seq_cst) == 0) return;
+  wakes_.fetch_add(1, std::memory_order_release);
+  wakes_.notify_all();
+}
+
+void WaitableCounter::wait_until_at_least(uint64_t target, int threads) const {
+  SpinBudget budget(threads);
+  while (value_.load(std::memory_order_acquire) < target)
+    if (!budget.spin()) break;
+  if (value_.load(std::memory_order_acquire) >= target) return;
+  sleepers_.fetch_add(1, std::memory_order_seq_cst);
+  for (;;) {
+    const uint32_t wakes = wakes_.load(std::memory_order_acquire);
+    if (value_.load(std::memory_order_seq_cst) >= target) break;
+    wakes_.wait(wakes, std::memory_order_acquire);
+  }
+  sleepers_.fetch_sub(1, std::memory_order_relaxed);
 }
 
 ThreadTeam::ThreadTeam(int size) {
@@ -41,8 +77,7 @@ ThreadTeam::~ThreadTeam() {
   for (std::thread& helper : helpers_) helper.join();
 }
 
-// The sweeps are shared in two (sweep_schedule.h): more threads would only wait.
-int ThreadTeam::default_size() { return std::clamp(int(std::thread::hardware_concurrency()), 1, 2); }
+int ThreadTeam::default_size() { return hardware_threads(); }
 
 void ThreadTeam::run(const std::function<void(int)>& job) {
   if (helpers_.empty()) {
@@ -54,8 +89,7 @@ void ThreadTeam::run(const std::function<void(int)>& job) {
   generation_.fetch_add(1, std::memory_order_release);
   generation_.notify_all();
   job(0);
-  Backoff backoff;
-  while (pending_.load(std::memory_order_acquire) != 0) backoff.pause();
+  for (int left; (left = pending_.load(std::memory_order_acquire)) != 0;) wait_while_equal(pending_, left, size());
 }
 
 void ThreadTeam::barrier() {
@@ -64,28 +98,20 @@ void ThreadTeam::barrier() {
   if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == size()) {
     arrived_.store(0, std::memory_order_relaxed);
     barrier_phase_.store(phase + 1, std::memory_order_release);
+    barrier_phase_.notify_all();
     return;
   }
-  Backoff backoff;
-  while (barrier_phase_.load(std::memory_order_acquire) == phase) backoff.pause();
+  wait_while_equal(barrier_phase_, phase, size());
 }
 
 void ThreadTeam::serve(int member) {
   uint32_t seen = 0;
   for (;;) {
-    int spins = 0;
-    Clock::time_point idle_since;
-    uint32_t generation;
-    while ((generation = generation_.load(std::memory_order_acquire)) == seen) {
-      cpu_pause();
-      if (++spins % 64 != 0) continue;
-      if (spins == 64) idle_since = Clock::now();
-      else if (Clock::now() - idle_since > kSpinBeforeSleep) generation_.wait(seen, std::memory_order_acquire);
-    }
-    seen = generation;
+    wait_while_equal(generation_, seen, size());
+    seen = generation_.load(std::memory_order_acquire);
     if (stopping_.load(std::memory_order_acquire)) return;
     (*job_)(member);
-    pending_.fetch_sub(1, std::memory_order_acq_rel);
+    if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) pending_.notify_all();
   }
 }
 

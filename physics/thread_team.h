@@ -1,5 +1,6 @@
-// The caller and a few helper threads that run the solver's sweeps together. A helper spins for a
-// moment after each job (the next sweep comes within microseconds), then sleeps until woken.
+// The caller and helper threads that run the solver's sweeps together. Every wait spins for a
+// moment (the awaited work usually ends within microseconds), then sleeps on a futex until woken:
+// with more threads than cores, a spinning waiter would take the core of the thread it waits for.
 #pragma once
 #include <atomic>
 #include <chrono>
@@ -10,15 +11,33 @@
 
 namespace impulse::physics {
 
-// Spins politely: a pause instruction, and a yield now and then so that a thread we wait for can
-// run even when there are more threads than cores.
-class Backoff {
+// How long a waiter spins before it sleeps. Waking a sleeper costs tens of microseconds (a virtual
+// machine's idle core may even be handed back to the host), more than most waits; but with more
+// threads than cores every spin is taken from a thread that could be working.
+class SpinBudget {
  public:
-  void pause();
+  explicit SpinBudget(int threads);
+  // Spins once; false when the budget is spent and the caller should sleep.
+  bool spin();
 
  private:
   int spins_ = 0;
-  std::chrono::steady_clock::time_point started_;  // at the 64th spin
+  int spin_limit_;                                   // pauses before the clock is read, when oversubscribed
+  std::chrono::steady_clock::time_point started_;    // at the 64th spin
+};
+
+// A counter that one thread raises and others wait on, spinning then sleeping (sweep_schedule.h's
+// progress). raise() is a plain store unless somebody sleeps.
+class alignas(64) WaitableCounter {
+ public:
+  uint64_t load() const { return value_.load(std::memory_order_acquire); }
+  void raise(uint64_t value);
+  void wait_until_at_least(uint64_t target, int threads) const;
+
+ private:
+  std::atomic<uint64_t> value_{0};
+  mutable std::atomic<uint32_t> sleepers_{0};
+  std::atomic<uint32_t> wakes_{0};  // 32 bits: a futex of its own to sleep on
 };
 
 class ThreadTeam {
@@ -36,7 +55,7 @@ class ThreadTeam {
   // Inside a job: returns when every member has reached it.
   void barrier();
 
-  // The solver's default: one per core, at least 1 and at most 2.
+  // The solver's default: one per core (at least 1).
   static int default_size();
 
  private:

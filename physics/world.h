@@ -46,8 +46,9 @@ struct WorldSettings {
   SleepSettings sleep;
   Real joint_hertz = 60;           // stiffness of the joints' position correction
   Real joint_damping_ratio = 2;
-  int threads = 0;                 // threads that share the solver's sweeps; 0: one per core, at most 2. The
-                                   // results are the same, bit for bit, for any count.
+  int threads = 0;                 // threads that share the step's work; 0: one per core. A sweep is shared
+                                   // by up to 8 (sweep_schedule.h). The results are the same, bit for bit,
+                                   // for any count.
 };
 
 class World {

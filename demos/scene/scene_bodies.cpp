@@ -102,7 +102,7 @@ void read_world(TableReader& top, Scene& scene) {
   w.contact.rolling_resistance = r.number("rolling_resistance", w.contact.rolling_resistance, 0, 1);
   w.contact.contact_hertz = r.number("contact_hertz", w.contact.contact_hertz, 0, 10000, true);
   w.sleep.enabled = r.boolean("sleeping", w.sleep.enabled);
-  w.threads = r.integer("threads", w.threads, 0, 2);  // 0: one per core, at most 2; the results do not depend on it
+  w.threads = r.integer("threads", w.threads, 0, 64);  // 0: one per core; the results do not depend on it
   w.penalty.hertz = r.number("penalty_hertz", w.penalty.hertz, 0, 10000, true);
   w.penalty.damping_ratio = r.number("penalty_damping_ratio", w.penalty.damping_ratio, 0);
   r.finish();

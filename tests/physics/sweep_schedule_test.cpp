@@ -1,6 +1,6 @@
-// The sweep's order and how two threads share it (physics/sweep_schedule.h): the order is the same
-// for any thread count, and on two threads every body still receives its items in exactly that
-// order, so the results keep their bits. Items solved side by side share no body.
+// The sweep's order and how threads share it (physics/sweep_schedule.h): the order is the same for
+// any thread count, and on any number of threads every body still receives its items in exactly
+// that order, so the results keep their bits. Items solved side by side share no body.
 #include "physics/sweep_schedule.h"
 #include "physics/thread_team.h"
 
@@ -44,30 +44,51 @@ struct Received {
 
 TEST(SweepSchedule, TheOrderIsEveryItemOnceAndTheSameForAnyThreadCount) {
   const std::vector<SweepItem> items = floor_items();
-  ASSERT_GT(items.size(), 1000u);  // large enough to be cut in two
-  SweepSchedule one, two;
+  ASSERT_GT(items.size(), 2000u);  // large enough to be cut to eight leaves
+  SweepSchedule one;
   one.plan(items, kSide * kSide, 1);
-  two.plan(items, kSide * kSide, 2);
   EXPECT_FALSE(one.parallel());
-  EXPECT_TRUE(two.parallel());
-  EXPECT_EQ(one.order(), two.order());
   std::vector<int> sorted = one.order();
   std::sort(sorted.begin(), sorted.end());
   for (size_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], int(i));
+  for (const int threads : {2, 3, 4, 8, 12}) {
+    SweepSchedule shared;
+    shared.plan(items, kSide * kSide, threads);
+    EXPECT_TRUE(shared.parallel()) << threads << " threads";
+    EXPECT_EQ(one.order(), shared.order()) << threads << " threads";
+  }
 }
 
-TEST(SweepSchedule, OnTwoThreadsEveryBodyReceivesItsItemsInTheSweepsOrder) {
+TEST(SweepSchedule, OnAnyThreadCountEveryBodyReceivesItsItemsInTheSweepsOrder) {
   const std::vector<SweepItem> items = floor_items();
-  SweepSchedule serial, shared;
+  SweepSchedule serial;
   serial.plan(items, kSide * kSide, 1);
-  shared.plan(items, kSide * kSide, 2);
   Received expected{serial, items};
   for (int place = 0; place < int(serial.order().size()); ++place) expected(place, 1);
-  ThreadTeam team(2);
-  for (int sweep = 0; sweep < 20; ++sweep) {  // epochs: each sweep waits only for its own places
-    Received received{shared, items};
-    shared.sweep(team, received);
-    ASSERT_EQ(received.by_body, expected.by_body) << "sweep " << sweep;
+  for (const int threads : {2, 3, 4, 8}) {  // more than this machine's cores: waits sleep
+    SweepSchedule shared;
+    shared.plan(items, kSide * kSide, threads);
+    ThreadTeam team(threads);
+    for (int sweep = 0; sweep < 20; ++sweep) {  // epochs: each sweep waits only for its own places
+      Received received{shared, items};
+      shared.sweep(team, received);
+      ASSERT_EQ(received.by_body, expected.by_body) << threads << " threads, sweep " << sweep;
+    }
+  }
+}
+
+// Up to eight threads each sweep a share, none less than half an even share.
+TEST(SweepSchedule, EveryThreadUpToEightSweepsAFairShare) {
+  const std::vector<SweepItem> items = floor_items();
+  for (const int threads : {2, 3, 4, 8}) {
+    SweepSchedule schedule;
+    schedule.plan(items, kSide * kSide, threads);
+    std::vector<int> places(threads, 0);  // each thread counts only its own
+    ThreadTeam team(threads);
+    const uint64_t epoch = schedule.new_epochs(1);
+    team.run([&](int thread) { schedule.sweep_share(thread, epoch, [&](int, int width) { places[thread] += width; }); });
+    for (int thread = 0; thread < threads; ++thread)
+      EXPECT_GE(places[thread], int(items.size()) / threads / 2) << "thread " << thread << " of " << threads;
   }
 }
 
@@ -96,7 +117,7 @@ TEST(SweepSchedule, ItemsSolvedSideBySideShareNoBodyAndHaveOneSize) {
 
 TEST(SweepSchedule, SlotsAndBodiesAreInversePermutations) {
   const std::vector<SweepItem> items = floor_items();
-  for (const int threads : {1, 2}) {
+  for (const int threads : {1, 2, 3, 8}) {
     SweepSchedule schedule;
     schedule.plan(items, kSide * kSide, threads);
     ASSERT_EQ(schedule.slots().size(), size_t(kSide * kSide));

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <thread>
 #include <vector>
 
@@ -13,7 +15,7 @@ namespace impulse::physics {
 namespace {
 
 TEST(ThreadTeam, EveryMemberRunsEachJobOnceAndRunWaitsForAll) {
-  for (const int size : {1, 2, 3}) {
+  for (const int size : {1, 2, 3, 8}) {
     ThreadTeam team(size);
     ASSERT_EQ(team.size(), size);
     std::vector<int> runs(size, 0);  // each member writes only its own
@@ -31,7 +33,7 @@ TEST(ThreadTeam, EveryMemberRunsEachJobOnceAndRunWaitsForAll) {
 }
 
 TEST(ThreadTeam, ABarrierHoldsEveryMemberUntilAllHaveReachedIt) {
-  for (const int size : {1, 2, 3}) {
+  for (const int size : {1, 2, 3, 8}) {
     ThreadTeam team(size);
     std::vector<int> first(size, 0), second(size, 0);
     std::atomic<int> missed{0};
@@ -48,9 +50,29 @@ TEST(ThreadTeam, ABarrierHoldsEveryMemberUntilAllHaveReachedIt) {
   }
 }
 
-TEST(ThreadTeam, TheDefaultSizeIsOneOrTwo) {
-  EXPECT_GE(ThreadTeam::default_size(), 1);
-  EXPECT_LE(ThreadTeam::default_size(), 2);
+TEST(ThreadTeam, TheDefaultSizeIsOnePerCore) {
+  EXPECT_EQ(ThreadTeam::default_size(), std::max(1, int(std::thread::hardware_concurrency())));
+}
+
+// A waiter sleeps once its spins are spent, and is woken by the raise it waits for, with more
+// threads than cores too (each sleeps at once then).
+TEST(WaitableCounter, AWaiterWakesForTheRaiseItWaitsFor) {
+  for (const int threads : {1, 64}) {
+    WaitableCounter counter;
+    std::atomic<int> woken{0};
+    std::thread waiter([&] {
+      counter.wait_until_at_least(3, threads);
+      woken = 1;
+    });
+    counter.raise(1);
+    counter.raise(2);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));  // long past the spins: asleep
+    EXPECT_EQ(woken.load(), 0) << "woke before its value";
+    counter.raise(3);
+    waiter.join();
+    EXPECT_EQ(woken.load(), 1);
+    EXPECT_EQ(counter.load(), 3u);
+  }
 }
 
 }  // namespace
