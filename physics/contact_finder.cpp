@@ -19,7 +19,7 @@ constexpr size_t kMinPairsPerThread = 128;
 }  // namespace
 
 void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint8_t>& awake, Real dt,
-                         Real base_margin, ThreadTeam& team, std::vector<Contact>& out) {
+                         Real base_margin, ThreadTeam& team, int team_threads, std::vector<Contact>& out) {
   out.clear();
   // Each box grows by its body's share of a pair's margin, so that two boxes overlap whenever
   // their shapes are within base_margin + motion_bound(a) + motion_bound(b).
@@ -30,7 +30,7 @@ void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint
     motion_bounds_[i] = motion_bound(bodies[i], dt);
     boxes_[i] = body_aabb(bodies[i], base_margin / 2 + motion_bounds_[i]);
   }
-  broad_phase_.find_pairs(boxes_, awake, pairs_, &team);
+  broad_phase_.find_pairs(boxes_, awake, pairs_, team_threads > 1 ? &team : nullptr);
   // Each pair starts from last call's cache (both lists in increasing pair order: one merge).
   caches_.assign(pairs_.size(), SatCache{});
   auto before = [](const BodyPair& x, const BodyPair& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; };
@@ -45,7 +45,7 @@ void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint
       collide(bodies[pair.a], pair.a, bodies[pair.b], pair.b, margin, contacts, &caches_[k]);
     }
   };
-  const size_t threads = std::min(size_t(team.size()), pairs_.size() / kMinPairsPerThread);
+  const size_t threads = std::min({size_t(team.size()), size_t(std::max(team_threads, 1)), pairs_.size() / kMinPairsPerThread});
   if (threads < 2) {
     collide_range(0, pairs_.size(), out);
   } else {

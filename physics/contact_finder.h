@@ -18,9 +18,9 @@ class ContactFinder {
   // static bodies are never awake) into `out` (cleared first). A pair's speculative margin is
   // base_margin plus how far each body can move in dt. The contacts come pair by pair in
   // increasing order of (i, j), exactly as a loop over all pairs would give them, however many
-  // threads of `team` share the narrow phase.
+  // of `team`'s threads share the broad and narrow phase (at most `threads`).
   void find(const std::vector<Body>& bodies, const std::vector<uint8_t>& awake, Real dt, Real base_margin,
-            ThreadTeam& team, std::vector<Contact>& out);
+            ThreadTeam& team, int threads, std::vector<Contact>& out);
 
  private:
   BroadPhase broad_phase_;

@@ -64,7 +64,7 @@ ContactConstraint make_constraint(const Contact& contact, const std::vector<Body
 }  // namespace
 
 void ContactSolver::plan(const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
-                        const std::vector<PairMaterial>& pair_materials, ThreadTeam& team) {
+                        const std::vector<PairMaterial>& pair_materials, ThreadTeam& team, int threads) {
   team_ = &team;
   pair_materials_ = &pair_materials;
   // Consecutive contacts of one pair (with one normal) form its manifold, of at most four points.
@@ -88,7 +88,7 @@ void ContactSolver::plan(const std::vector<Contact>& contacts, const std::vector
     items[k] = {moving(contact.body_a), moving(contact.body_b), bodies[contact.body_a].position, bodies[contact.body_b].position,
                 can_bounce ? 0 : groups_[k].second - groups_[k].first};
   }
-  schedule_.plan(items, int(bodies.size()), team.size());
+  schedule_.plan(items, int(bodies.size()), std::min(threads, team.size()));
 }
 
 void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, const SolverBodies& solver_bodies,

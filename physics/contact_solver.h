@@ -30,11 +30,12 @@ namespace impulse::physics {
 
 class ContactSolver {
  public:
-  // Plans this step's sweeps over the contacts' manifolds and how `team` shares them; slots() then
+  // Plans this step's sweeps over the contacts' manifolds and how `threads` of `team` share them
+  // (1: the caller alone); slots() then
   // says where each body's state goes (the solver's indices, in states and in the constraints).
   // `pair_materials` (materials.h) must outlive the step.
   void plan(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, const std::vector<PairMaterial>& pair_materials,
-            ThreadTeam& team);
+            ThreadTeam& team, int threads);
   const std::vector<int>& slots() const { return schedule_.slots(); }
   const std::vector<int>& body_of_slot() const { return schedule_.bodies(); }
   // Builds the constraints of the planned contacts, warm started from the last step's impulses

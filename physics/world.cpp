@@ -1,5 +1,6 @@
 #include "physics/world.h"
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,7 @@ World::World(WorldSettings settings) : settings_(settings) {
   if (settings_.response) response_ = settings_.response();
   substeps_ = settings_.substeps;
   team_ = std::make_unique<ThreadTeam>(settings_.threads > 0 ? settings_.threads : ThreadTeam::default_size());
+  share_chooser_ = ShareChooser(settings_.threads == 0 && team_->size() > 1);
 }
 
 int World::add_body(const BodyDef& def) {
@@ -37,9 +39,11 @@ void World::step() {
   const Real dt = settings_.time_step;
   substeps_ = choose_substeps();
   const Real h = dt / substeps_;
+  const auto started = std::chrono::steady_clock::now();
+  const int threads = share_chooser_.next_step_shares() ? team_->size() : 1;
 
-  find_contacts();
-  contact_solver_.plan(contacts_, bodies_, settings_.pair_materials, *team_);
+  find_contacts(threads);
+  contact_solver_.plan(contacts_, bodies_, settings_.pair_materials, *team_, threads);
   load_states();
   if (settings_.method == ResponseMethod::impulse)
     contact_solver_.prepare(contacts_, bodies_, solver_bodies_, settings_.contact, settings_.gravity, h);
@@ -54,6 +58,8 @@ void World::step() {
                   settings_.sleep);
   time_ += dt;
   ++step_count_;
+  share_chooser_.step_took(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
+                           double(contacts_.size()) * substeps_ + double(bodies_.size()));
   check_finite();
 }
 
@@ -100,12 +106,12 @@ int World::choose_substeps() {
   return fewer;
 }
 
-void World::find_contacts() {
+void World::find_contacts(int threads) {
   // Contacts of awake bodies; a sleeping island they reach wakes, and then its own contacts count.
   do {
     awake_.resize(bodies_.size());
     for (size_t i = 0; i < bodies_.size(); ++i) awake_[i] = !bodies_[i].is_static() && bodies_[i].awake;
-    contact_finder_.find(bodies_, awake_, settings_.time_step, 4 * settings_.linear_slop, *team_, contacts_);
+    contact_finder_.find(bodies_, awake_, settings_.time_step, 4 * settings_.linear_slop, *team_, threads, contacts_);
   } while (islands_.wake_touched(bodies_, contacts_, links_, settings_.linear_slop, settings_.sleep));
 }
 

@@ -14,6 +14,7 @@
 #include "physics/soft_step.h"
 #include "physics/stack_sink.h"
 #include "physics/step_record.h"
+#include "physics/share_chooser.h"
 #include "physics/thread_team.h"
 
 #include <atomic>
@@ -46,7 +47,8 @@ struct WorldSettings {
   SleepSettings sleep;
   Real joint_hertz = 60;           // stiffness of the joints' position correction
   Real joint_damping_ratio = 2;
-  int threads = 0;                 // threads that share the step's work; 0: one per core. A sweep is shared
+  int threads = 0;                 // threads that share the step's work; 0: one per core, each step shared
+                                   // or not as has run faster lately (share_chooser.h). A sweep is shared
                                    // by up to 8 (sweep_schedule.h). The results are the same, bit for bit,
                                    // for any count.
 };
@@ -89,7 +91,7 @@ class World {
     Real normal = 0, tangent1 = 0, tangent2 = 0;
   };
 
-  void find_contacts();
+  void find_contacts(int threads);
   int choose_substeps();
   // The response, by method (response_method.cpp).
   void respond(Real dt, Real h);
@@ -130,6 +132,7 @@ class World {
   std::unique_ptr<OutsideResponse> response_;  // settings_.response's, for this world alone
   std::vector<TeachingImpulse> teaching_impulses_;  // per contact, this step's, for the teaching methods' records
   std::unique_ptr<ThreadTeam> team_;  // on the heap: the solver keeps its address, and World can move
+  ShareChooser share_chooser_{false};
   // The lowest index store_states() found not finite, or the body count. On the heap: World moves.
   std::unique_ptr<std::atomic<int>> non_finite_body_ = std::make_unique<std::atomic<int>>(0);
   mutable StepRecord record_;

@@ -31,7 +31,7 @@ TEST(ContactFinder, SameContactsAsAllPairs) {
     ThreadTeam team(threads);
     ContactFinder finder;
     std::vector<Contact> found;
-    finder.find(bodies, awake, dt, base_margin, team, found);
+    finder.find(bodies, awake, dt, base_margin, team, threads, found);
     ASSERT_EQ(found.size(), expected.size()) << threads << " threads";
     for (size_t k = 0; k < found.size(); ++k) {
       EXPECT_EQ(found[k].body_a, expected[k].body_a) << k;
