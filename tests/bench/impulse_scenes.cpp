@@ -6,6 +6,8 @@
 
 namespace impulse::bench {
 
+int impulse_threads = 0;
+
 namespace {
 
 class ImpulseEngine {
@@ -45,6 +47,7 @@ class ImpulseEngine {
     s.gravity = {0, -9.81, 0};
     s.time_step = kTimeStep;
     s.sleep.enabled = sleep;
+    s.threads = impulse_threads;
     return s;
   }
 
@@ -65,7 +68,8 @@ std::string impulse_description() {
   const physics::WorldSettings s;
   return "impulse (" + std::to_string(s.min_substeps) + " to " + std::to_string(s.substeps) + " sub-steps for stacks sinking < " +
          std::to_string(int(s.stack_sink * 1000)) + " mm, contact hertz " + std::to_string(int(s.contact.contact_hertz)) + ", " +
-         std::to_string(physics::ThreadTeam::default_size()) + " threads, " + (sizeof(physics::Real) == 8 ? "double" : "single") +
+         (impulse_threads > 0 ? std::to_string(impulse_threads) + " threads always"
+                              : std::to_string(physics::ThreadTeam::default_size()) + " threads (default: shared while faster)") + ", " + (sizeof(physics::Real) == 8 ? "double" : "single") +
          " precision)";
 }
 

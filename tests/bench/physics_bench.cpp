@@ -6,13 +6,16 @@
 //   physics_bench                 the whole table (several minutes)
 //   physics_bench --quick         every scene for a few steps (a smoke test)
 //   physics_bench --scene NAME    one scene: stack-10, stack-20, pyramid, large-pyramid, boxes, spheres
+//   physics_bench --threads N     impulse's world.threads (default 0: one per core, shared while faster)
 #include "tests/bench/physics_scenes.h"
 
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -308,9 +311,10 @@ void print_growth(const std::vector<Outcome>& outcomes) {
 
 int usage(const char* program, FILE* to) {
   std::fprintf(to,
-               "usage: %s [--quick] [--scene NAME]...\n"
+               "usage: %s [--quick] [--scene NAME]... [--threads N]\n"
                "  --quick        every run cut to 30 steps (large-pyramid: 5), for a smoke test\n"
                "  --scene NAME   only this scene (repeatable): stack-10, stack-20, pyramid, large-pyramid, boxes, spheres\n"
+               "  --threads N    impulse's world.threads: N always share (default 0: one per core, shared while faster)\n"
                "The default is the whole table of ../shared/bench/SCENES.md; it takes several minutes.\n",
                program);
   return to == stderr ? 2 : 0;
@@ -335,6 +339,8 @@ int main(int argc, char** argv) {
         return usage(argv[0], stderr);
       }
       only.insert(name);
+    } else if (arg == "--threads" && i + 1 < argc) {
+      impulse_threads = std::max(0, std::atoi(argv[++i]));
     } else if (arg == "-h" || arg == "--help") return usage(argv[0], stdout);
     else return usage(argv[0], stderr);
   }

@@ -118,6 +118,8 @@ void measure(Engine& engine, const Scene& scene, const Run& run, RunResult& out)
 // The engines (impulse_scenes.cpp, bullet_scenes.cpp, box3d_scenes.cpp). They throw on failure.
 // Box3D's are defined only in a build with Box3D (IMPULSE_BENCH_HAVE_BOX3D).
 void run_impulse(const Scene& scene, const Run& run, RunResult& out);
+// impulse's WorldSettings::threads in the runs (0, the default: one per core, shared while faster).
+extern int impulse_threads;
 void run_bullet(const Scene& scene, const Run& run, RunResult& out);
 std::string bullet_description();  // version and precision
 void run_box3d(const Scene& scene, const Run& run, RunResult& out);
