@@ -4,15 +4,16 @@
 
 namespace impulse::demos {
 
-std::vector<render::Caption> captions_at(const std::vector<CaptionCue>& cues, double time) {
+float cue_opacity(double start, double end, double time) {
   constexpr double kFade = 0.2;  // s
+  const double fade = std::min(kFade, 0.25 * (end - start));
+  return float(std::clamp(std::min({1.0, (time - start) / fade + 0.25, (end - time) / fade}), 0.0, 1.0));
+}
+
+std::vector<render::Caption> captions_at(const std::vector<CaptionCue>& cues, double time) {
   std::vector<render::Caption> shown;
-  for (const CaptionCue& cue : cues) {
-    if (time < cue.start || time >= cue.end) continue;
-    const double fade = std::min(kFade, 0.25 * (cue.end - cue.start));
-    const double opacity = std::min({1.0, (time - cue.start) / fade + 0.25, (cue.end - time) / fade});
-    shown.push_back({cue.text, float(std::clamp(opacity, 0.0, 1.0))});
-  }
+  for (const CaptionCue& cue : cues)
+    if (time >= cue.start && time < cue.end) shown.push_back({cue.text, cue_opacity(cue.start, cue.end, time)});
   return shown;
 }
 

@@ -10,4 +10,8 @@ namespace impulse::demos {
 
 std::vector<render::Caption> captions_at(const std::vector<CaptionCue>& cues, double time);
 
+// How opaque a cue shown from `start` to `end` is at `time` within it: fading in and out over
+// 0.2 s (a quarter of a shorter cue). Captions and [[equation]]s fade alike.
+float cue_opacity(double start, double end, double time);
+
 }  // namespace impulse::demos

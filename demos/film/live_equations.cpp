@@ -1,5 +1,6 @@
 #include "demos/film/live_equations.h"
 
+#include "demos/film/captions.h"
 #include "demos/film/marks.h"
 #include "demos/scene/scene_error.h"
 
@@ -61,12 +62,6 @@ ImpactNumbers made_up_impact() {
   impact.angular = 0.25;
   impact.impulse = 2;
   return impact;
-}
-
-// Captions' fade (captions.cpp): in and out over 0.2 s of its time cue.
-float opacity_at(double start, double end, double time) {
-  const double fade = std::min(0.2, 0.25 * (end - start));
-  return float(std::clamp(std::min({1.0, (time - start) / fade + 0.25, (end - time) / fade}), 0.0, 1.0));
 }
 
 render::PanelPlace place_named(const std::string& position) {
@@ -181,7 +176,7 @@ void LiveEquations::add_panels(double time, const ImpactNumbers& impact, render:
     render::OverlayPanel panel;
     panel.place = place_named(cue.position);
     panel.math = typeset(cue.live ? fill_live_values(cue.tex, impact) : cue.tex, cue.origin, float(cue.size));
-    panel.opacity = opacity_at(cue.start, cue.end, time);
+    panel.opacity = cue_opacity(cue.start, cue.end, time);
     overlay.panels.push_back(std::move(panel));
   }
 }

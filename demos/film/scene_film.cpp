@@ -188,9 +188,12 @@ int SceneFilm::poster_frame(const LabelledPeak& peak) const {
   std::vector<double> frame_times;  // simulated s each frame of the video shows
   for (const Moment& moment : moments_)
     if (moment.frame >= 0) frame_times.push_back(moment.time);
-  const auto fading = [&](int f) {
-    for (const render::Caption& caption : captions_at(scene_.captions, frame_times[size_t(f)]))
+  const auto fading = [&](int f) {  // a caption or an [[equation]] fading in or out
+    const double time = frame_times[size_t(f)];
+    for (const render::Caption& caption : captions_at(scene_.captions, time))
       if (caption.opacity < 1) return true;
+    for (const EquationCue& cue : scene_.equations)
+      if (time >= cue.start && time < cue.end && cue_opacity(cue.start, cue.end, time) < 1) return true;
     return false;
   };
   for (int distance = 0; distance < frame_count(); ++distance)
