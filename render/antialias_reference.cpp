@@ -7,6 +7,19 @@
 #include <vector>
 
 namespace impulse::render {
+namespace {
+
+// A fixed integer hash mapped to [0, 1): the same offsets on every machine.
+float unit_hash(uint32_t i) {
+  i ^= i >> 16;
+  i *= 0x7feb352dU;
+  i ^= i >> 15;
+  i *= 0x846ca68bU;
+  i ^= i >> 16;
+  return float(i >> 8) / float(1 << 24);
+}
+
+}  // namespace
 
 Frame supersampled_reference(int width, int height, RendererSettings settings, const DrawList& draw_list, int grid) {
   settings.antialiasing = Antialiasing::none;
@@ -14,7 +27,9 @@ Frame supersampled_reference(int width, int height, RendererSettings settings, c
   std::vector<uint32_t> sums(size_t(width) * size_t(height) * 4, 0);
   for (int j = 0; j < grid; ++j) {
     for (int i = 0; i < grid; ++i) {
-      renderer.set_subpixel_offset((float(i) + 0.5f) / grid - 0.5f, (float(j) + 0.5f) / grid - 0.5f);
+      const auto cell = uint32_t(j * grid + i);
+      renderer.set_subpixel_offset((float(i) + unit_hash(2 * cell)) / float(grid) - 0.5f,
+                                   (float(j) + unit_hash(2 * cell + 1)) / float(grid) - 0.5f);
       const Frame& frame = renderer.draw(draw_list);
       for (size_t k = 0; k < sums.size(); ++k) sums[k] += frame.rgba[k];
     }

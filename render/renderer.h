@@ -33,7 +33,7 @@ enum class Antialiasing {
 };
 
 struct RendererSettings {
-  Antialiasing antialiasing = Antialiasing::msaa;
+  Antialiasing antialiasing = Antialiasing::edges;
   int samples = 4;              // multisamples a pixel with Antialiasing::msaa
   ShadowMethod shadows = ShadowMethod::ground;
   int shadow_map_size = 2048;   // texels a side, for ShadowMethod::shadow_map

@@ -113,14 +113,18 @@ const vec4 kNoEdges = vec4(2.0);
 #ifdef EDGE_AA
 layout(location = 1) out vec4 out_edge;
 
-// A zero gradient gives an infinite or undefined distance, which is dropped.
+// A zero gradient gives an infinite or undefined distance, which is dropped. (Selects, not
+// branches or a computed index: llvmpipe runs 8 or 16 pixels in step.)
 vec4 with_edge(vec4 edges, float inside) {
   vec2 gradient = vec2(dFdx(inside), dFdy(inside));
   bool along_x = abs(gradient.x) >= abs(gradient.y);
-  float offset = -inside / (along_x ? gradient.x : gradient.y);  // towards the outline
-  vec4 candidate = kNoEdges;
-  if (abs(offset) < 1.0) candidate[(along_x ? 0 : 2) + (offset >= 0.0 ? 0 : 1)] = abs(offset);
-  return min(edges, candidate);
+  // Towards the outline: where `inside` falls. A pixel drawn a little outside it (a mesh's facet
+  // beyond the true sphere) is on it.
+  float slope = along_x ? gradient.x : gradient.y;
+  float offset = max(inside, 0.0) / abs(slope);
+  bool forward = slope < 0.0;
+  bvec4 slot = bvec4(along_x && forward, along_x && !forward, !along_x && forward, !along_x && !forward);
+  return offset < 1.0 ? min(edges, mix(kNoEdges, vec4(offset), slot)) : edges;
 }
 void write_edges(vec4 edges) { out_edge = vec4(lessThan(edges, vec4(1.0))) * (1.0 - edges); }
 #else
@@ -156,11 +160,13 @@ out vec3 v_world;
 out vec3 v_normal;
 out vec3 v_local;
 out vec3 v_local_normal;
+flat out vec4 v_sphere;  // centre and radius, for an icosphere
 flat out vec3 v_colour;
 flat out int v_style;
 
 void main() {
   vec4 world = in_model * vec4(in_position, 1.0);
+  v_sphere = vec4(in_model[3].xyz, length(in_model[0].xyz));
   v_world = world.xyz;
   v_normal = in_normal_matrix * in_normal;
   v_local = in_position;
@@ -178,18 +184,21 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_local;
 in vec3 v_local_normal;
+flat in vec4 v_sphere;
 flat in vec3 v_colour;
 flat in int v_style;
 
-uniform int u_sphere_mesh;  // 1: icospheres, whose outline is where they turn away from the eye
+uniform int u_sphere_mesh;  // 1: icospheres, whose outline is the true sphere's (as an impostor's)
 
 out vec4 out_colour;
 
 void main() {
   vec3 normal = normalize(v_normal);
   if (!gl_FrontFacing) normal = -normal;
-  float facing = dot(normal, normalize(u_camera_position - v_world));
-  write_edges(u_sphere_mesh != 0 ? with_edge(kNoEdges, facing) : with_box_face_edges(kNoEdges, v_local, v_local_normal));
+  vec3 eye_to_centre = v_sphere.xyz - u_camera_position;
+  float along = dot(eye_to_centre, normalize(v_world - u_camera_position));
+  float inside = along * along - dot(eye_to_centre, eye_to_centre) + v_sphere.w * v_sphere.w;  // the ray meets it
+  write_edges(u_sphere_mesh != 0 ? with_edge(kNoEdges, inside) : with_box_face_edges(kNoEdges, v_local, v_local_normal));
   out_colour = surface_colour(v_colour, v_style, v_local, v_world, normal);
 }
 )";

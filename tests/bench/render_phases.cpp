@@ -76,16 +76,17 @@ Timing time_drawing(const BenchSettings& settings, int frames) {
   return watch.stop(frames);
 }
 
-double colour_error(const BenchSettings& settings, const std::string& image_path) {
+ColourError colour_error(const BenchSettings& settings, const std::string& image_path) {
   const render::DrawList scene = bench_draw_list(0);
   const render::Frame reference = render::supersampled_reference(settings.width, settings.height, settings.renderer, scene);
+  const render::Frame fine = render::supersampled_reference(settings.width, settings.height, settings.renderer, scene, 8);
   render::Renderer renderer(settings.width, settings.height, settings.renderer);
   const render::Frame& frame = renderer.draw(scene);
   if (!image_path.empty()) {
     render::write_png(image_path, frame);
     render::write_png(std::filesystem::path(image_path).replace_extension(".reference.png").string(), reference);
   }
-  return render::mean_colour_error(frame, reference);
+  return {render::mean_colour_error(frame, reference), render::mean_colour_error(frame, fine)};
 }
 
 Timing time_overlay(const BenchSettings& settings, int frames) {

@@ -1,11 +1,14 @@
-// What anti-aliasing is measured against (render/antialias_reference.h): a frame drawn at
-// sub-pixel offsets and averaged.
+// Anti-aliasing measured as tests/bench/render_bench measures it: the mean colour error of a frame
+// against its supersampled reference (render/antialias_reference.h), a frame drawn at sub-pixel
+// offsets and averaged. The default (edge anti-aliasing) must be no worse than 4x multisampling,
+// on a small frame with every kind of outline: spheres, boxes, arrows, points and ground shadows.
 #include "render/antialias_reference.h"
 #include "render/renderer.h"
 #include "tests/support/render_scenes.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 
 namespace impulse {
@@ -13,6 +16,31 @@ namespace {
 
 constexpr int kWidth = 320;
 constexpr int kHeight = 240;
+
+double error_with(const render::RendererSettings& settings, const render::Frame& reference) {
+  render::Renderer renderer(kWidth, kHeight, settings);
+  return render::mean_colour_error(renderer.draw(testing::bodies_scene()), reference);
+}
+
+TEST(Antialiasing, TheDefaultIsNoWorseThanFourTimesMultisampling) {
+  const render::RendererSettings defaults;
+  ASSERT_EQ(defaults.antialiasing, render::Antialiasing::edges);
+  render::RendererSettings msaa, none;
+  msaa.antialiasing = render::Antialiasing::msaa;
+  msaa.samples = 4;
+  none.antialiasing = render::Antialiasing::none;
+  for (const int grid : {4, 8}) {  // 16x, the bench's reference, and 64x
+    const render::Frame reference = render::supersampled_reference(kWidth, kHeight, defaults, testing::bodies_scene(), grid);
+    const double edges_error = error_with(defaults, reference);
+    const double msaa_error = error_with(msaa, reference);
+    const double none_error = error_with(none, reference);
+    std::printf("mean colour error against %dx supersampling: edges %.4f, 4x MSAA %.4f, none %.4f\n", grid * grid,
+                edges_error, msaa_error, none_error);
+    EXPECT_LT(msaa_error, 0.6 * none_error) << "the measure sees anti-aliasing";
+    EXPECT_LT(edges_error, 0.6 * none_error);
+    EXPECT_LE(edges_error, msaa_error) << grid * grid << "x supersampled reference";
+  }
+}
 
 // The offsets move the image as they say: moved by two whole pixels (an even number keeps llvmpipe's
 // 2x2 pixel quads, whose differences shade the grid lines, as they were), the frame is the
