@@ -11,25 +11,25 @@ namespace {
 enum Direction { kPlusX, kMinusX, kPlusY, kMinusY };
 constexpr Direction kOpposite[4] = {kMinusX, kPlusX, kMinusY, kPlusY};
 
+// Parts in units of 1/510 of a pixel: an outline stored as s (distance d = 1 - s/255) crossing this
+// pixel gives the part 1/2 - d = (2s - 255)/510 beyond it; a neighbour's stored as t reaching into
+// this pixel gives d - 1/2 = (255 - 2t)/510. Integers, so a pixel costs a few instructions.
+constexpr int kWhole = 510;
+
 // The part of the pixel at (x, y) to take from its neighbour in each direction (0 where there is none).
-std::array<float, 4> parts_at(const uint8_t* edges, int x, int y, int width, int height) {
+std::array<int, 4> parts_at(const uint8_t* edges, int x, int y, int width, int height) {
   const size_t index = size_t(y) * size_t(width) + size_t(x);
   const uint8_t* own = edges + 4 * index;
   const bool has[4] = {x + 1 < width, x > 0, y + 1 < height, y > 0};
   const std::ptrdiff_t step[4] = {1, -1, width, -width};
-  std::array<float, 4> parts{};
+  std::array<int, 4> parts{};
   for (int direction = 0; direction < 4; ++direction) {
     if (!has[direction]) continue;
-    if (own[direction] != kNoEdge) {
-      const float distance = edge_distance(own[direction]);
-      if (distance < 0.5f) parts[size_t(direction)] = 0.5f - distance;
-    }
+    const int mine = 2 * int(own[direction]) - 255;  // > 0: d < 1/2
     // The neighbour's outline towards this pixel, 1/2 .. 1 pixel from its centre, lies in this one.
     const uint8_t theirs = edges[4 * size_t(std::ptrdiff_t(index) + step[direction]) + size_t(kOpposite[direction])];
-    if (theirs != kNoEdge) {
-      const float distance = edge_distance(theirs);
-      if (distance >= 0.5f) parts[size_t(direction)] = std::max(parts[size_t(direction)], distance - 0.5f);
-    }
+    const int reaching = theirs != kNoEdge ? 255 - 2 * int(theirs) : 0;  // > 0: d > 1/2
+    parts[size_t(direction)] = std::max({mine, reaching, 0});
   }
   return parts;
 }
@@ -89,20 +89,23 @@ void resolve_edges(const uint8_t* colour, const uint8_t* edges, int width, int h
         continue;
       }
       if (!near_outline(edges, x, y, width, height)) continue;
-      std::array<float, 4> parts = parts_at(edges, x, y, width, height);
-      const float taken = parts[0] + parts[1] + parts[2] + parts[3];
+      std::array<int, 4> parts = parts_at(edges, x, y, width, height);
+      int taken = parts[0] + parts[1] + parts[2] + parts[3];
       if (taken <= 0) continue;
-      if (taken > 1) for (float& part : parts) part /= taken;  // outlines closer than a pixel: shared out
+      if (taken > kWhole) {  // outlines closer than a pixel: shared out
+        for (int& part : parts) part = part * kWhole / taken;
+        taken = parts[0] + parts[1] + parts[2] + parts[3];
+      }
       const uint8_t* self = in + 4 * size_t(x);
-      float mixed[3] = {float(self[0]), float(self[1]), float(self[2])};
+      int mixed[3] = {self[0] * (kWhole - taken), self[1] * (kWhole - taken), self[2] * (kWhole - taken)};
       for (int direction = 0; direction < 4; ++direction) {
-        const float part = parts[size_t(direction)];
-        if (part <= 0) continue;  // also where there is no neighbour
+        const int part = parts[size_t(direction)];
+        if (part == 0) continue;  // also where there is no neighbour
         const uint8_t* other = self + step[direction];
-        for (int channel = 0; channel < 3; ++channel) mixed[channel] += part * float(int(other[channel]) - int(self[channel]));
+        for (int channel = 0; channel < 3; ++channel) mixed[channel] += part * other[channel];
       }
       for (int channel = 0; channel < 3; ++channel)
-        out[4 * size_t(x) + size_t(channel)] = uint8_t(std::clamp(mixed[channel] + 0.5f, 0.0f, 255.0f));
+        out[4 * size_t(x) + size_t(channel)] = uint8_t((mixed[channel] + kWhole / 2) / kWhole);
     }
   }
 }
