@@ -92,6 +92,14 @@ void resolve_edges(const uint8_t* colour, const uint8_t* edges, int width, int h
       std::array<int, 4> parts = parts_at(edges, x, y, width, height);
       int taken = parts[0] + parts[1] + parts[2] + parts[3];
       if (taken <= 0) continue;
+      // Outlines across x and across y (a corner): the part beyond both is in each strip, so the
+      // pixel takes x + y - x*y in all (exact for a right-angled corner), shared in proportion.
+      const int across_x = parts[kPlusX] + parts[kMinusX], across_y = parts[kPlusY] + parts[kMinusY];
+      if (across_x > 0 && across_y > 0) {
+        const int beyond = across_x + across_y - across_x * across_y / kWhole;
+        for (int& part : parts) part = part * beyond / taken;
+        taken = parts[0] + parts[1] + parts[2] + parts[3];
+      }
       if (taken > kWhole) {  // outlines closer than a pixel: shared out
         for (int& part : parts) part = part * kWhole / taken;
         taken = parts[0] + parts[1] + parts[2] + parts[3];

@@ -7,8 +7,9 @@
 // - else the neighbour's outline towards it reaching into it (1/2 <= d < 1): the part d - 1/2.
 // For a straight outline with a slope up to 1 across the axis, that part is exactly the pixel's
 // area beyond the outline, so a long edge gets its true coverage (4x MSAA: to a quarter at best),
-// and a part thinner than a pixel takes in both sides. Corners and outlines closer than a pixel
-// to one another keep some error; tests/bench/render_bench measures it.
+// a part thinner than a pixel takes in both sides, and a right-angled corner (outlines across x
+// and across y) its part beyond both once. Curved corners and outlines closer than a pixel to one
+// another keep some error; tests/bench/render_bench measures it.
 #pragma once
 #include <cstdint>
 

@@ -114,6 +114,25 @@ TEST(EdgeAntialias, APartThinnerThanAPixelTakesInBothSides) {
   }
 }
 
+TEST(EdgeAntialias, ACornersPartBeyondBothOutlinesIsTakenOnce) {
+  Image image;  // a black square up to x = 3.8 and y = 2.8: pixel (3, 2) is 0.8 x 0.8 covered
+  for (int y = 0; y <= 2; ++y) {
+    for (int x = 0; x <= 3; ++x) {
+      const size_t i = size_t(y * kWidth + x);
+      for (int c = 0; c < 3; ++c) image.colour[4 * i + size_t(c)] = 0;
+      if (x == 3) image.edges[4 * i + kPlusX] = stored(0.3f);
+      if (y == 2) image.edges[4 * i + kPlusY] = stored(0.3f);
+    }
+  }
+  render::Frame frame;
+  render::resolve_edges(image.colour.data(), image.edges.data(), kWidth, kHeight, frame);
+  auto at = [&](int x, int y) { return int(frame.rgba[size_t(((kHeight - 1 - y) * kWidth + x) * 4)]); };
+  EXPECT_NEAR(at(3, 2), expected(0.8f * 0.8f), 1);
+  EXPECT_NEAR(at(3, 1), expected(0.8f), 1);
+  EXPECT_NEAR(at(2, 2), expected(0.8f), 1);
+  EXPECT_EQ(at(2, 1), 0);
+}
+
 TEST(EdgeAntialias, WithoutOutlinesTheImageIsOnlyTurned) {
   Image image;
   for (size_t i = 0; i < image.colour.size(); ++i) image.colour[i] = uint8_t(i * 7);
