@@ -63,7 +63,14 @@ void add_video_options(CLI::App* command, VideoOverrides& overrides) {
                       "Encoder speed against file size: superfast (default), veryfast (about half the size, "
                       "slower), ... medium")
       ->check(CLI::IsMember({"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}));
-  command->add_option("--samples", overrides.samples, "Multisample anti-aliasing: 4 (default) or 0 for none")
+  command->add_option("--antialias", overrides.antialias,
+                      "Anti-aliasing: edges (one sample a pixel, then each pixel an outline crosses mixed by its "
+                      "coverage; default), msaa (multisampling, --samples of them, 4 unless said; about twice the "
+                      "drawing time) or none")
+      ->check(CLI::IsMember({"edges", "msaa", "none"}));
+  command->add_option("--samples", overrides.samples,
+                      "Multisample anti-aliasing with this many samples a pixel (same as --antialias msaa), or 0 "
+                      "for none")
       ->check(CLI::IsMember({0, 2, 4, 8}));
   command->add_option("--spheres", overrides.spheres,
                       "How spheres are drawn: impostor (ray-cast, default) or tessellated (size-chosen meshes)")

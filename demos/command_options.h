@@ -19,8 +19,8 @@ std::string examples_footer(const std::string& examples);
 // --set KEY=VALUE (repeatable): render, compare, simulate, check, verify, catalogue.
 void add_scene_options(CLI::App* command, SceneArguments& arguments);
 
-// The scene options and --quality, --width, --height, --fps, --crf, --x264-preset, --samples,
-// --spheres, --shadows: every command that renders.
+// The scene options and --quality, --width, --height, --fps, --crf, --x264-preset, --antialias,
+// --samples, --spheres, --shadows: every command that renders.
 void add_video_options(CLI::App* command, VideoOverrides& overrides);
 
 // Where a rendering command writes: the video, and PNG frames or stills.

@@ -68,7 +68,8 @@ void write_manifest(const std::string& directory, const GoldenManifest& manifest
   for (const double moment : manifest.moments) moments.push_back(moment_key(moment));
   const toml::table table{{"program", manifest.program}, {"scene", manifest.scene},     {"width", manifest.width},
                           {"height", manifest.height},   {"fps", manifest.fps},         {"quality", manifest.quality},
-                          {"samples", manifest.samples}, {"spheres", manifest.spheres}, {"shadows", manifest.shadows},
+                          {"antialias", manifest.antialias}, {"samples", manifest.samples},
+                          {"spheres", manifest.spheres}, {"shadows", manifest.shadows},
                           {"settings", settings},        {"moments_ms", moments}};
   write_file(manifest_path(directory), [&](std::ofstream& file) {
     file << "# Written by `impulse verify --update`: what the golden stills t_*.png were rendered with.\n"
@@ -107,6 +108,8 @@ GoldenManifest read_manifest(const std::string& directory) {
   manifest.fps = table["fps"].value_or(0);
   manifest.quality = table["quality"].value_or(std::string());
   manifest.samples = table["samples"].value_or(4);
+  // Goldens from before the choice of anti-aliasing were multisampled, or had none with 0 samples.
+  manifest.antialias = table["antialias"].value_or(std::string(manifest.samples > 0 ? "msaa" : "none"));
   manifest.spheres = table["spheres"].value_or(std::string());
   manifest.shadows = table["shadows"].value_or(std::string());
   if (const toml::array* settings = table["settings"].as_array())

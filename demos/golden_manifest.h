@@ -22,7 +22,8 @@ struct GoldenManifest {
   std::string scene;    // the scene file
   int width = 0, height = 0, fps = 0;
   std::string quality;  // "low", "medium", "high", or "custom" (named by the size and rate)
-  int samples = 4;
+  std::string antialias = "msaa";  // edges, msaa or none
+  int samples = 4;                 // with msaa
   std::string spheres, shadows;
   std::vector<std::string> settings;  // the --set arguments
   std::vector<double> moments;        // s of simulated time, one golden still each (moments_ms in the file)

@@ -34,7 +34,8 @@ struct VideoOverrides {
   std::string quality;  // empty: the scene's
   std::optional<int> width, height, fps, crf;
   std::string x264_preset;  // empty: the scene's
-  int samples = 4;
+  std::string antialias;        // empty: the renderer's default (edges), or msaa when --samples says
+  std::optional<int> samples;  // --samples
   std::string spheres = "impostor";
   std::string shadows = "ground";
 
@@ -52,7 +53,12 @@ struct VideoOverrides {
     if (!x264_preset.empty()) video.preset = x264_preset;
     if (video.width % 2 || video.height % 2)
       throw std::invalid_argument("--width and --height must be even (H.264 yuv420p halves the colour planes)");
-    options.renderer.samples = samples;
+    if (samples && !antialias.empty() && antialias != "msaa")
+      throw std::invalid_argument("--samples is the number of multisamples: use it with --antialias msaa or alone, not with --antialias " + antialias);
+    if (antialias == "edges") options.renderer.antialiasing = render::Antialiasing::edges;
+    if (antialias == "msaa" || samples) options.renderer.antialiasing = render::Antialiasing::msaa;
+    if (antialias == "none" || (samples && *samples == 0)) options.renderer.antialiasing = render::Antialiasing::none;
+    if (samples && *samples > 0) options.renderer.samples = *samples;
     options.renderer.spheres = spheres == "tessellated" ? render::SphereMethod::tessellated : render::SphereMethod::impostor;
     options.renderer.shadows = shadows == "map"    ? render::ShadowMethod::shadow_map
                                : shadows == "none" ? render::ShadowMethod::none

@@ -64,6 +64,9 @@ GoldenManifest manifest_of(const Scene& scene, const RenderOptions& options, con
   manifest.height = scene.video.height;
   manifest.fps = scene.video.fps;
   manifest.quality = quality_name(manifest.width, manifest.height, manifest.fps);
+  manifest.antialias = options.renderer.antialiasing == render::Antialiasing::edges  ? "edges"
+                      : options.renderer.antialiasing == render::Antialiasing::msaa ? "msaa"
+                                                                                    : "none";
   manifest.samples = options.renderer.samples;
   manifest.spheres = options.renderer.spheres == render::SphereMethod::tessellated ? "tessellated" : "impostor";
   manifest.shadows = options.renderer.shadows == render::ShadowMethod::shadow_map ? "map"

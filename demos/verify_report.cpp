@@ -49,7 +49,8 @@ void write_report(const std::string& path, const std::string& scene_path, const 
          << "<p><b>" << (passed ? "passed" : "FAILED") << "</b>: " << moments.size() - failed << " of "
          << moments.size() << " moments match.</p>\n";
     for (const std::string& note : notes) page << "<p><b>" << html(note) << "</b></p>\n";
-    page << "<table><tr><td>goldens</td><td>" << html(describe_size(manifest)) << ", samples " << manifest.samples
+    page << "<table><tr><td>goldens</td><td>" << html(describe_size(manifest)) << ", anti-aliasing " << html(manifest.antialias)
+         << (manifest.antialias == "msaa" ? " (" + std::to_string(manifest.samples) + " samples)" : std::string())
          << ", spheres " << html(manifest.spheres) << ", shadows " << html(manifest.shadows) << "</td></tr>\n"
          << "<tr><td>recorded by</td><td>" << html(manifest.program) << " from " << html(manifest.scene) << "</td></tr>\n"
          << "<tr><td>--set</td><td>";

@@ -1,6 +1,7 @@
 #include "render/flat_arrows.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -11,8 +12,32 @@ constexpr float kMinShaftWidthPixels = 2.5f;
 constexpr float kMinHeadWidthPixels = 10.0f;
 constexpr float kLayerOffset = 0.002f;  // of the distance to the eye, towards it, per layer
 
-void add(std::vector<FlatVertex>& triangles, const Vec3f& p, const Colour& colour) {
-  triangles.push_back({{p.x(), p.y(), p.z()}, {colour.r, colour.g, colour.b}});
+// A corner of a triangle and its values of FlatVertex::outline.
+struct Corner {
+  Vec3f position;
+  std::array<float, 4> outline;
+};
+
+void add(std::vector<FlatVertex>& triangles, const Colour& colour, const Corner& a, const Corner& b, const Corner& c) {
+  for (const Corner* corner : {&a, &b, &c}) {
+    const Corner& k = *corner;
+    triangles.push_back({{k.position.x(), k.position.y(), k.position.z()},
+                         {colour.r, colour.g, colour.b},
+                         {k.outline[0], k.outline[1], k.outline[2], k.outline[3]}});
+  }
+}
+
+// A strip from `from` to `to`, `side` either side of its line, as two triangles; its outline is
+// its two sides, and its ends where said (the shaft's end under the head is not).
+void add_strip(std::vector<FlatVertex>& triangles, const Colour& colour, const Vec3f& from, const Vec3f& to,
+               const Vec3f& side, bool outlined_to) {
+  const float end = outlined_to ? 0.0f : 2.0f;  // the `to` end's value (across: 1 - along)
+  const Corner from_left{from - side, {0, 2, 0, outlined_to ? 1.0f : 2.0f}};
+  const Corner to_left{to - side, {0, 2, 1, end}};
+  const Corner to_right{to + side, {2, 0, 1, end}};
+  const Corner from_right{from + side, {2, 0, 0, outlined_to ? 1.0f : 2.0f}};
+  add(triangles, colour, from_left, to_left, to_right);
+  add(triangles, colour, from_left, to_right, from_right);
 }
 
 }  // namespace
@@ -58,15 +83,8 @@ void append_flat_arrow(const ArrowItem& arrow, const CameraView& camera, std::ve
   if (!shape) return;
   const auto& [origin, head_base, tip, shaft_side, head_side] = *shape;
   const Colour& c = arrow.colour;
-  add(triangles, origin - shaft_side, c);
-  add(triangles, head_base - shaft_side, c);
-  add(triangles, head_base + shaft_side, c);
-  add(triangles, origin - shaft_side, c);
-  add(triangles, head_base + shaft_side, c);
-  add(triangles, origin + shaft_side, c);
-  add(triangles, head_base - head_side, c);
-  add(triangles, tip, c);
-  add(triangles, head_base + head_side, c);
+  add_strip(triangles, c, origin, head_base, shaft_side, false);  // its end under the head is inside the arrow
+  add(triangles, c, {head_base - head_side, {1, 0, 0, 2}}, {tip, {0, 1, 0, 2}}, {head_base + head_side, {0, 0, 1, 2}});
 }
 
 void append_flat_arrow_outline(const ArrowItem& arrow, const CameraView& camera, std::vector<ScreenSegment>& outline) {
@@ -95,12 +113,7 @@ void append_flat_line(const LineItem& line, const CameraView& camera, std::vecto
   if (side.squaredNorm() < 1e-12f) side = along.unitOrthogonal();
   side = side.normalized() * (0.5f * std::max(line.width_pixels, 1.0f) / pixels_per_metre);
   const Colour& c = line.colour;
-  add(triangles, line.from - side, c);
-  add(triangles, line.to - side, c);
-  add(triangles, line.to + side, c);
-  add(triangles, line.from - side, c);
-  add(triangles, line.to + side, c);
-  add(triangles, line.from + side, c);
+  add_strip(triangles, c, line.from, line.to, side, true);
 }
 
 }  // namespace impulse::render

@@ -14,6 +14,9 @@ namespace impulse::render {
 struct FlatVertex {
   float position[3];
   float colour[3];  // sRGB
+  // Four values that are 0 along the shape's outline and positive inside, interpolated across the
+  // shape (for edge anti-aliasing): a quad's sides and ends, not its diagonal; 2 where unused.
+  float outline[4];
 };
 
 // Head and shaft grow with the arrow's length up to a limit, so short arrows stay arrows and long

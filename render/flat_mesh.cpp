@@ -9,10 +9,10 @@ FlatMesh::FlatMesh() {
   glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_.id());
   glBufferData(GL_ARRAY_BUFFER, sizeof(FlatVertex), nullptr, GL_STREAM_DRAW);  // makes the name a buffer
   glBindVertexBuffer(0, vertex_buffer_.id(), 0, sizeof(FlatVertex));
-  for (GLuint location : {0u, 1u}) {
+  const size_t offsets[] = {offsetof(FlatVertex, position), offsetof(FlatVertex, colour), offsetof(FlatVertex, outline)};
+  for (GLuint location : {0u, 1u, 2u}) {
     glEnableVertexAttribArray(location);
-    glVertexAttribFormat(location, 3, GL_FLOAT, GL_FALSE,
-                         static_cast<GLuint>(location == 0 ? offsetof(FlatVertex, position) : offsetof(FlatVertex, colour)));
+    glVertexAttribFormat(location, location == 2 ? 4 : 3, GL_FLOAT, GL_FALSE, static_cast<GLuint>(offsets[location]));
     glVertexAttribBinding(location, 0);
   }
   glBindVertexArray(0);

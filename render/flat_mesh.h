@@ -1,5 +1,5 @@
 // Triangles of flat-coloured vertices (FlatVertex) streamed to the GPU each frame and drawn in
-// one call: attribute 0 position, 1 colour.
+// one call: attribute 0 position, 1 colour, 2 outline.
 #pragma once
 #include <vector>
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "render/edge_antialias.h"
+
 namespace impulse::render {
 namespace {
 
@@ -21,8 +23,8 @@ void require_complete(const char* what) {
 
 }  // namespace
 
-OffscreenTarget::OffscreenTarget(int width, int height, int samples)
-    : width_(width), height_(height), samples_(samples) {
+OffscreenTarget::OffscreenTarget(int width, int height, int samples, bool edges)
+    : width_(width), height_(height), samples_(samples), edges_(edges) {
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
   if (width <= 0 || height <= 0 || width > max_size || height > max_size) {
@@ -32,6 +34,7 @@ OffscreenTarget::OffscreenTarget(int width, int height, int samples)
   GLint max_samples = 0;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   samples_ = std::clamp(samples, 0, static_cast<int>(max_samples));
+  if (edges_ && samples_ > 0) throw std::logic_error("OffscreenTarget: edge anti-aliasing draws one sample a pixel");
 
   auto storage = [&](const GlRenderbuffer& renderbuffer, int sample_count, GLenum internal_format) {
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer.id());
@@ -39,20 +42,29 @@ OffscreenTarget::OffscreenTarget(int width, int height, int samples)
   };
   storage(multisample_colour_, samples_, GL_RGBA8);
   storage(multisample_depth_, samples_, GL_DEPTH_COMPONENT24);
-  storage(resolved_colour_, 0, GL_RGBA8);
+  if (samples_ > 0) storage(resolved_colour_, 0, GL_RGBA8);
+  if (edges_) storage(edge_image_, 0, GL_RGBA8);
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
 
   glBindFramebuffer(GL_FRAMEBUFFER, multisample_framebuffer_.id());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, multisample_colour_.id());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, multisample_depth_.id());
-  require_complete("multisample");
+  if (edges_) {
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, edge_image_.id());
+    const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, both);
+  }
+  require_complete("main");
 
-  glBindFramebuffer(GL_FRAMEBUFFER, resolved_framebuffer_.id());
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolved_colour_.id());
-  require_complete("resolve");
+  if (samples_ > 0) {
+    glBindFramebuffer(GL_FRAMEBUFFER, resolved_framebuffer_.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolved_colour_.id());
+    require_complete("resolve");
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
   bottom_up_pixels_.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  if (edges_) bottom_up_edges_.resize(bottom_up_pixels_.size());
 }
 
 void OffscreenTarget::bind_for_drawing() const {
@@ -62,19 +74,43 @@ void OffscreenTarget::bind_for_drawing() const {
 
 void OffscreenTarget::copy_samples_to(const OffscreenTarget& other) const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, other.multisample_framebuffer_.id());
+  if (other.edges_) glDrawBuffer(GL_COLOR_ATTACHMENT0);  // a blit writes every draw buffer
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
                     GL_NEAREST);
+  if (other.edges_) {
+    const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, both);
+    other.clear_edges();
+  }
+}
+
+void OffscreenTarget::clear_edges() const {
+  if (!edges_) return;
+  const GLfloat none[4] = {0, 0, 0, 0};  // kNoEdge
+  glClearBufferfv(GL_COLOR, 1, none);
 }
 
 void OffscreenTarget::resolve_into(Frame& frame) {
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_.id());
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_.id());
-  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_framebuffer_.id());
+  if (samples_ > 0) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_.id());
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_framebuffer_.id());
+  } else {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_.id());  // one sample: read it as drawn
+  }
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up_pixels_.data());
+  if (edges_) {
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up_edges_.data());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    resolve_edges(bottom_up_pixels_.data(), bottom_up_edges_.data(), width_, height_, frame);
+    return;
+  }
 
   // GL's first row is the bottom one; Frame's is the top one.
   frame.width = width_;

@@ -1,5 +1,7 @@
-// Where the main pass draws: a multisampled colour + depth framebuffer, resolved into a
-// single-sample one that is read back into a Frame.
+// Where the main pass draws: a colour + depth framebuffer, multisampled and then resolved into a
+// single-sample one, or single-sampled and read back as it is; with `edges`, a second colour
+// image (RGBA8) where each pixel's nearest outlines are, which resolve_into anti-aliases the colours
+// with (edge_antialias.h).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -11,12 +13,16 @@ namespace impulse::render {
 
 class OffscreenTarget {
  public:
-  OffscreenTarget(int width, int height, int samples);  // throws std::runtime_error if incomplete
+  // Throws std::runtime_error if incomplete. `edges` needs samples == 0.
+  OffscreenTarget(int width, int height, int samples, bool edges = false);
 
   void bind_for_drawing() const;  // binds the draw framebuffer and sets the viewport
-  // Copies this target's colour and depth samples into `other` (same size and samples).
+  // Copies this target's colour and depth samples into `other` (same size and samples); `other`'s
+  // edge image, if any, is cleared (no outline anywhere).
   void copy_samples_to(const OffscreenTarget& other) const;
-  void resolve_into(Frame& frame);  // resolves the samples and reads RGBA, rows top to bottom
+  void clear_edges() const;  // with the draw framebuffer bound
+  // Resolves the samples (or anti-aliases by the edges) and reads RGBA, rows top to bottom.
+  void resolve_into(Frame& frame);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -26,12 +32,15 @@ class OffscreenTarget {
   int width_;
   int height_;
   int samples_;
+  bool edges_;
   GlRenderbuffer multisample_colour_;
   GlRenderbuffer multisample_depth_;
+  GlRenderbuffer edge_image_;
   GlFramebuffer multisample_framebuffer_;
   GlRenderbuffer resolved_colour_;
   GlFramebuffer resolved_framebuffer_;
   std::vector<uint8_t> bottom_up_pixels_;
+  std::vector<uint8_t> bottom_up_edges_;
 };
 
 }  // namespace impulse::render

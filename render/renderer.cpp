@@ -51,12 +51,14 @@ struct BackgroundKey {
   bool ground;
   float ground_height;
   Vec3f towards_light;
+  Eigen::Vector2f subpixel_offset;
 
   bool operator==(const BackgroundKey& other) const {
     auto same = [](const Colour& a, const Colour& b) { return a.r == b.r && a.g == b.g && a.b == b.b; };
     return camera.position == other.camera.position && camera.target == other.camera.target &&
            camera.fov_y_degrees == other.camera.fov_y_degrees && same(background, other.background) &&
-           ground == other.ground && ground_height == other.ground_height && towards_light == other.towards_light;
+           ground == other.ground && ground_height == other.ground_height && towards_light == other.towards_light &&
+           subpixel_offset == other.subpixel_offset;
   }
 };
 
@@ -88,15 +90,18 @@ struct Renderer::Gpu {
   GlContext context;
   RendererSettings settings;
   bool shadow_map_on = settings.shadows == ShadowMethod::shadow_map && settings.shadow_map_size > 0;
-  ShaderProgram lit{"lit", shaders::lit_vertex(), shaders::lit_fragment(shadow_map_on)};
-  ShaderProgram impostor{"impostor", shaders::impostor_vertex(), shaders::impostor_fragment(shadow_map_on)};
-  ShaderProgram ground{"ground", shaders::ground_vertex(), shaders::ground_fragment(shadow_map_on, false)};
-  ShaderProgram ground_shadow{"ground shadow", shaders::ground_shadow_vertex(), shaders::ground_fragment(false, true)};
+  bool edges_on = settings.antialiasing == Antialiasing::edges;
+  int samples = settings.antialiasing == Antialiasing::msaa ? settings.samples : 0;
+  ShaderProgram lit{"lit", shaders::lit_vertex(), shaders::lit_fragment(shadow_map_on, edges_on)};
+  ShaderProgram impostor{"impostor", shaders::impostor_vertex(), shaders::impostor_fragment(shadow_map_on, edges_on)};
+  ShaderProgram ground{"ground", shaders::ground_vertex(), shaders::ground_fragment(shadow_map_on, false, edges_on)};
+  ShaderProgram ground_shadow{"ground shadow", shaders::ground_shadow_vertex(),
+                              shaders::ground_fragment(false, true, edges_on)};
   ShaderProgram depth_only{"shadow", shaders::shadow_vertex(), ""};
   ShaderProgram impostor_shadow{"impostor shadow", shaders::impostor_shadow_vertex(),
                                 shaders::impostor_shadow_fragment()};
   std::array<GpuMesh, kMaxSphereLevel + 1> sphere_levels = make_sphere_levels<kMaxSphereLevel + 1>();
-  ShaderProgram flat{"flat", shaders::flat_vertex(), shaders::flat_fragment()};
+  ShaderProgram flat{"flat", shaders::flat_vertex(), shaders::flat_fragment(edges_on)};
   FlatMesh arrow_mesh;
   GpuMesh cube_mesh{make_cube()};
   GpuMesh shadow_discs{make_quad()};  // each around a sphere's great disc (ground_shadow.h)
@@ -109,6 +114,7 @@ struct Renderer::Gpu {
   // ground: then they are kept here and copied in (cheaper than clearing), redrawn on a change.
   std::optional<OffscreenTarget> background;
   std::optional<BackgroundKey> background_key;
+  Eigen::Vector2f subpixel_offset = Eigen::Vector2f::Zero();  // pixels, x right, y down
 
   // Scratch, kept to reuse their memory from frame to frame.
   std::array<std::vector<Instance>, kMaxSphereLevel + 1> spheres_by_level;
@@ -116,8 +122,8 @@ struct Renderer::Gpu {
   std::vector<FlatVertex> arrows;
 
   Gpu(int width, int height, const RendererSettings& renderer_settings)
-      : settings(renderer_settings), target(width, height, renderer_settings.samples) {
-    if (!shadow_map_on) background.emplace(width, height, settings.samples);
+      : settings(renderer_settings), target(width, height, samples, edges_on) {
+    if (!shadow_map_on) background.emplace(width, height, samples);
     if (shadow_map_on) {
       shadow_map.emplace(settings.shadow_map_size);
       for (const ShaderProgram* program : {&lit, &impostor, &ground}) {
@@ -208,8 +214,10 @@ void Renderer::Gpu::draw_bodies() {
   lit.use();
   lit.set("u_alpha", 1.0f);
   lit.set("u_ambient_lift", 0.0f);
+  lit.set("u_sphere_mesh", 0);
   cube_mesh.draw();
   if (settings.spheres == SphereMethod::tessellated) {
+    lit.set("u_sphere_mesh", 1);
     for (const GpuMesh& level : sphere_levels) level.draw();
   } else {
     glDisable(GL_CULL_FACE);
@@ -233,10 +241,13 @@ void Renderer::Gpu::draw_marks() {
     point_quads.draw();
   };
   glEnable(GL_BLEND);
+  // The edge image (if any) keeps the nearer of the ghost's outline and the body's behind it.
+  glBlendEquationi(1, GL_MAX);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_FALSE);
   draw_all(kArrowGhostAlpha);
+  glBlendEquationi(1, GL_FUNC_ADD);
   glDisable(GL_BLEND);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -270,7 +281,7 @@ void Renderer::Gpu::clear(const Colour& colour) const {
 void Renderer::Gpu::prepare_background(const DrawList& draw_list, const CameraView& camera,
                                        const Vec3f& towards_light) {
   const BackgroundKey key{draw_list.camera, draw_list.background, draw_list.ground, draw_list.ground_height,
-                          towards_light};
+                          towards_light, subpixel_offset};
   if (!background_key || !(*background_key == key)) {
     background->bind_for_drawing();
     clear(draw_list.background);
@@ -304,6 +315,8 @@ Renderer::Renderer(int width, int height, RendererSettings settings)
 
 Renderer::~Renderer() = default;
 
+void Renderer::set_subpixel_offset(float x, float y) { gpu_->subpixel_offset = {x, y}; }
+
 int Renderer::width() const { return gpu_->target.width(); }
 int Renderer::height() const { return gpu_->target.height(); }
 const RendererSettings& Renderer::settings() const { return gpu_->settings; }
@@ -317,7 +330,14 @@ void Renderer::draw_into(const DrawList& draw_list, Frame& frame) {
   Gpu& gpu = *gpu_;
   gpu.context.make_current();
 
-  const CameraView camera = make_camera_view(draw_list.camera, width(), height());
+  CameraView camera = make_camera_view(draw_list.camera, width(), height());
+  if (!gpu.subpixel_offset.isZero()) {
+    // Clip x and y move by an offset times w: the image moves by it after the divide.
+    Eigen::Matrix4f shift = Eigen::Matrix4f::Identity();
+    shift(0, 3) = 2.0f * gpu.subpixel_offset.x() / float(width());
+    shift(1, 3) = -2.0f * gpu.subpixel_offset.y() / float(height());
+    camera.view_projection = shift * camera.view_projection;
+  }
   const float light_length = draw_list.towards_light.norm();
   const Vec3f towards_light = std::isfinite(light_length) && light_length > 1e-6f
                                   ? Vec3f(draw_list.towards_light / light_length)
@@ -351,6 +371,7 @@ void Renderer::draw_into(const DrawList& draw_list, Frame& frame) {
     // test skips the pixels they hide.
     gpu.target.bind_for_drawing();
     gpu.clear(draw_list.background);
+    gpu.target.clear_edges();
     gpu.draw_bodies();
     if (draw_list.ground) gpu.draw_ground(draw_list, camera);
   }

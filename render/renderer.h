@@ -1,5 +1,5 @@
 // Draws a DrawList into an RGBA Frame with OpenGL 4.5 core on an offscreen OSMesa context:
-// shadowed, lit spheres, boxes, arrows and points over a gridded ground plane, multisampled.
+// shadowed, lit spheres, boxes, arrows and points over a gridded ground plane, anti-aliased.
 // Each Renderer owns its own GL context; use it from one thread at a time.
 #pragma once
 #include <memory>
@@ -23,8 +23,18 @@ enum class ShadowMethod {
   none,
 };
 
+// How edges are smoothed. tests/bench/render_bench measures each one's speed and its error against
+// a 16x supersampled image (antialias_reference.h); tests/render/antialias_test holds edges to
+// no worse than 4x MSAA.
+enum class Antialiasing {
+  edges,  // one sample a pixel; each pixel an outline crosses mixed by its coverage (edge_antialias.h)
+  msaa,   // `samples` samples a pixel, resolved (4x: twice the drawing time of the others on llvmpipe)
+  none,
+};
+
 struct RendererSettings {
-  int samples = 4;              // multisample anti-aliasing; 0 turns it off
+  Antialiasing antialiasing = Antialiasing::edges;
+  int samples = 4;              // multisamples a pixel with Antialiasing::msaa
   ShadowMethod shadows = ShadowMethod::ground;
   int shadow_map_size = 2048;   // texels a side, for ShadowMethod::shadow_map
   SphereMethod spheres = SphereMethod::impostor;
@@ -43,6 +53,10 @@ class Renderer {
   const Frame& draw(const DrawList& draw_list);
   // The same, into a frame of the caller's (resized as needed): lets a pipeline keep several.
   void draw_into(const DrawList& draw_list, Frame& frame);
+
+  // Moves the image by a fraction of a pixel (x right, y down) in every later draw: the
+  // supersampled reference draws the frame at 16 such offsets (antialias_reference.h).
+  void set_subpixel_offset(float x, float y);
 
   int width() const;
   int height() const;

@@ -103,6 +103,46 @@ vec4 surface_colour(vec3 srgb, int style, vec3 local, vec3 world, vec3 normal) {
 }
 )";
 
+// Edge anti-aliasing (edge_antialias.h): beside its colour a fragment writes how far its pixel's
+// centre is from the nearest outline of what it draws towards +x, -x, +y and -y (pixels; an outline
+// is where a value `inside`, > 0 inside and about linear across a pixel, is 0, and is counted along
+// the axis it is more across). Stored as 1 - distance, so 0 is none within a pixel. Without
+// EDGE_AA, nothing is written.
+constexpr const char* kEdges = R"(
+const vec4 kNoEdges = vec4(2.0);
+#ifdef EDGE_AA
+layout(location = 1) out vec4 out_edge;
+
+// A zero gradient gives an infinite or undefined distance, which is dropped. (Selects, not
+// branches or a computed index: llvmpipe runs 8 or 16 pixels in step.)
+vec4 with_edge(vec4 edges, float inside) {
+  vec2 gradient = vec2(dFdx(inside), dFdy(inside));
+  bool along_x = abs(gradient.x) >= abs(gradient.y);
+  // Towards the outline: where `inside` falls. A pixel drawn a little outside it (a mesh's facet
+  // beyond the true sphere) is on it.
+  float slope = along_x ? gradient.x : gradient.y;
+  float offset = max(inside, 0.0) / abs(slope);
+  bool forward = slope < 0.0;
+  bvec4 slot = bvec4(along_x && forward, along_x && !forward, !along_x && forward, !along_x && !forward);
+  return offset < 1.0 ? min(edges, mix(kNoEdges, vec4(offset), slot)) : edges;
+}
+void write_edges(vec4 edges) { out_edge = vec4(lessThan(edges, vec4(1.0))) * (1.0 - edges); }
+#else
+vec4 with_edge(vec4 edges, float inside) { return edges; }
+void write_edges(vec4 edges) {}
+#endif
+// A box face (unit-cube coordinates `local`, face normal `local_normal`): its four sides.
+vec4 with_box_face_edges(vec4 edges, vec3 local, vec3 local_normal) {
+  for (int axis = 0; axis < 3; ++axis)
+    if (abs(local_normal[axis]) < 0.5) edges = with_edge(with_edge(edges, 1.0 - local[axis]), 1.0 + local[axis]);
+  return edges;
+}
+)";
+
+std::string defines(bool shadow_map, bool edges) {
+  return std::string(kVersion) + (shadow_map ? "#define SHADOW_MAP 1\n" : "") + (edges ? "#define EDGE_AA 1\n" : "");
+}
+
 }  // namespace
 
 std::string lit_vertex() {
@@ -119,14 +159,18 @@ uniform mat4 u_view_projection;
 out vec3 v_world;
 out vec3 v_normal;
 out vec3 v_local;
+out vec3 v_local_normal;
+flat out vec4 v_sphere;  // centre and radius, for an icosphere
 flat out vec3 v_colour;
 flat out int v_style;
 
 void main() {
   vec4 world = in_model * vec4(in_position, 1.0);
+  v_sphere = vec4(in_model[3].xyz, length(in_model[0].xyz));
   v_world = world.xyz;
   v_normal = in_normal_matrix * in_normal;
   v_local = in_position;
+  v_local_normal = in_normal;
   v_colour = in_colour;
   v_style = int(in_style + 0.5);
   gl_Position = u_view_projection * world;
@@ -134,19 +178,27 @@ void main() {
 )";
 }
 
-std::string lit_fragment(bool shadow_map) {
-  return std::string(kVersion) + (shadow_map ? "#define SHADOW_MAP 1\n" : "") + kLighting + kSurface + R"(
+std::string lit_fragment(bool shadow_map, bool edges) {
+  return defines(shadow_map, edges) + kLighting + kSurface + kEdges + R"(
 in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_local;
+in vec3 v_local_normal;
+flat in vec4 v_sphere;
 flat in vec3 v_colour;
 flat in int v_style;
+
+uniform int u_sphere_mesh;  // 1: icospheres, whose outline is the true sphere's (as an impostor's)
 
 out vec4 out_colour;
 
 void main() {
   vec3 normal = normalize(v_normal);
   if (!gl_FrontFacing) normal = -normal;
+  vec3 eye_to_centre = v_sphere.xyz - u_camera_position;
+  float along = dot(eye_to_centre, normalize(v_world - u_camera_position));
+  float inside = along * along - dot(eye_to_centre, eye_to_centre) + v_sphere.w * v_sphere.w;  // the ray meets it
+  write_edges(u_sphere_mesh != 0 ? with_edge(kNoEdges, inside) : with_box_face_edges(kNoEdges, v_local, v_local_normal));
   out_colour = surface_colour(v_colour, v_style, v_local, v_world, normal);
 }
 )";
@@ -199,8 +251,8 @@ void main() {
 )";
 }
 
-std::string impostor_fragment(bool shadow_map) {
-  return std::string(kVersion) + (shadow_map ? "#define SHADOW_MAP 1\n" : "") + kLighting + kSurface + R"(
+std::string impostor_fragment(bool shadow_map, bool edges) {
+  return defines(shadow_map, edges) + kLighting + kSurface + kEdges + R"(
 in vec3 v_world;
 flat in vec3 v_centre;
 flat in float v_radius;
@@ -226,6 +278,7 @@ void main() {
   float along = dot(eye_to_centre, direction);
   float inside = along * along - centre_distance_squared + radius_squared;
   float per_pixel = fwidth(inside);
+  vec4 edges = with_edge(kNoEdges, inside);
   if (inside < -1.5 * per_pixel) discard;
   gl_SampleMask[0] = -1;  // well inside: every sample (a shader that writes the mask must always)
   if (inside < 1.5 * per_pixel) {
@@ -250,30 +303,40 @@ void main() {
   vec3 normal = normalize(hit - v_centre);
   vec4 clip = u_view_projection * vec4(hit, 1.0);
   gl_FragDepth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
+  write_edges(edges);
   out_colour = surface_colour(v_colour, v_style, mat3(v_to_local_0, v_to_local_1, v_to_local_2) * (hit - v_centre), hit, normal);
 }
 )";
 }
 
+// The outline values (FlatVertex::outline) are interpolated with perspective: affine on the flat
+// shape, so they are 0 exactly along its sides, whichever of its triangles a pixel is in.
 std::string flat_vertex() {
   return std::string(kVersion) + R"(
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_colour;
+layout(location = 2) in vec4 in_outline;
 uniform mat4 u_view_projection;
 flat out vec3 v_colour;
+out vec4 v_outline;
 void main() {
   v_colour = in_colour;
+  v_outline = in_outline;
   gl_Position = u_view_projection * vec4(in_position, 1.0);
 }
 )";
 }
 
-std::string flat_fragment() {
-  return std::string(kVersion) + R"(
+std::string flat_fragment(bool edges) {
+  return defines(false, edges) + kEdges + R"(
 flat in vec3 v_colour;
+in vec4 v_outline;
 uniform float u_alpha;
 out vec4 out_colour;
-void main() { out_colour = vec4(v_colour, u_alpha); }
+void main() {
+  write_edges(with_edge(with_edge(with_edge(with_edge(kNoEdges, v_outline.x), v_outline.y), v_outline.z), v_outline.w));
+  out_colour = vec4(v_colour, u_alpha);
+}
 )";
 }
 
@@ -294,9 +357,8 @@ void main() {
 )";
 }
 
-std::string ground_fragment(bool shadow_map, bool in_shadow) {
-  return std::string(kVersion) + (shadow_map ? "#define SHADOW_MAP 1\n" : "") +
-         (in_shadow ? "#define IN_SHADOW 1\n" : "") + kLighting + R"(
+std::string ground_fragment(bool shadow_map, bool in_shadow, bool edges) {
+  return defines(shadow_map, edges) + (in_shadow ? "#define IN_SHADOW 1\n" : "") + kLighting + kEdges + R"(
 in vec3 v_world;
 
 uniform vec3 u_background;  // sRGB
@@ -318,6 +380,8 @@ float grid_line(vec2 coord, float spacing) {
 
 #ifdef IN_SHADOW
 in vec2 v_disc;
+in vec3 v_local;         // a box's shadow: the unit cube's coordinates and face normal
+in vec3 v_local_normal;
 uniform int u_disc;                 // 1: keep the samples inside the disc of the quad
 uniform vec2 u_sample_offsets[16];  // multisample positions relative to the pixel centre
 uniform int u_sample_count;
@@ -325,6 +389,7 @@ uniform int u_sample_count;
 
 void main() {
 #ifdef IN_SHADOW
+  write_edges(u_disc != 0 ? with_edge(kNoEdges, 1.0 - dot(v_disc, v_disc)) : with_box_face_edges(kNoEdges, v_local, v_local_normal));
   gl_SampleMask[0] = -1;  // every sample, unless the disc says otherwise (a shader that writes the mask must always)
   if (u_disc != 0) {
     // Per multisample, as the impostors: a quad is two large triangles, where a fan of thin ones
@@ -343,6 +408,9 @@ void main() {
       gl_SampleMask[0] = mask;
     }
   }
+#endif
+#ifndef IN_SHADOW
+  write_edges(kNoEdges);  // the ground: no outline on screen worth the name
 #endif
   float minor = grid_line(v_world.xz, 1.0);
   float major = grid_line(v_world.xz, 5.0);
@@ -368,6 +436,7 @@ void main() {
 std::string ground_shadow_vertex() {
   return std::string(kVersion) + R"(
 layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_normal;
 layout(location = 2) in mat4 in_model;
 
 uniform mat4 u_view_projection;
@@ -376,9 +445,13 @@ uniform float u_ground_height;
 
 out vec3 v_world;
 out vec2 v_disc;  // a disc's quad: the disc is where |v_disc| <= 1 (projection keeps this linear)
+out vec3 v_local;
+out vec3 v_local_normal;
 
 void main() {
   v_disc = in_position.xz;
+  v_local = in_position;
+  v_local_normal = in_normal;
   vec3 world = (in_model * vec4(in_position, 1.0)).xyz;
   world -= u_light_direction * (max(world.y - u_ground_height, 0.0) / max(u_light_direction.y, 0.05));
   world.y = u_ground_height;

@@ -1,11 +1,17 @@
 // render_bench: how fast a frame of 300 spheres, 100 boxes and 400 arrows (with a lecture
 // overlay) goes from a draw list to an MP4, phase by phase, against the naive peer (a PNG file
 // per frame, then the ffmpeg program). Prints one table; tests/bench/README.md records its figures.
+// Beside each way of drawing, its anti-aliasing's mean colour error (0..255 a channel, over every
+// pixel of the first frame, before the overlay) against a 16x supersampled reference: the frame
+// drawn without anti-aliasing at 16 sub-pixel offsets, one jittered in each cell of a 4x4 grid,
+// and averaged (render/antialias_reference.h says why jittered); and against a 64x one (8x8).
 //
 //   render_bench                   1280x720, 90 frames a phase, and peak memory of 10 s and 60 s videos
 //   render_bench --frames 300      more frames per phase
 //   render_bench --no-memory       skip the 10 s / 60 s memory runs (they take a few minutes)
 //   render_bench --smoke           320x240, a few frames: checks that everything runs (for ctest)
+//   render_bench --aa-images DIR   also writes the first frame of each way of drawing and its
+//                                  reference as PNG into DIR (edges.png, edges.reference.png, ...)
 //
 // Machines are shared and noisy: only figures from one run compare; the table says what else was
 // running (load average) and how many threads llvmpipe used.
@@ -40,6 +46,7 @@ struct Options {
   int frames = 90;
   bool smoke = false;
   bool memory = true;
+  std::string aa_images;  // a directory, or empty
   int child_seconds = 0;  // internal: render a video this long and exit (a memory run)
   std::string work = (fs::temp_directory_path() / "impulse_render_bench").string();
 };
@@ -56,9 +63,14 @@ const char* env_or(const char* name, const char* fallback) {
   return value ? value : fallback;
 }
 
-void row(const char* what, const bench::Timing& timing) {
-  std::printf("| %-44s | %8.1f | %8.1f | %8.1f |\n", what, timing.frames_per_second(),
-              1000.0 * timing.wall_seconds / timing.frames, 1000.0 * timing.cpu_seconds / timing.frames);
+// `error` < 0: not measured.
+void row(const char* what, const bench::Timing& timing, bench::ColourError error = {-1, -1}) {
+  char error_16x[16] = "-", error_64x[16] = "-";
+  if (error.against_16x >= 0) std::snprintf(error_16x, sizeof error_16x, "%.4f", error.against_16x);
+  if (error.against_64x >= 0) std::snprintf(error_64x, sizeof error_64x, "%.4f", error.against_64x);
+  std::printf("| %-44s | %8.1f | %8.1f | %8.1f | %9s | %9s |\n", what, timing.frames_per_second(),
+              1000.0 * timing.wall_seconds / timing.frames, 1000.0 * timing.cpu_seconds / timing.frames, error_16x,
+              error_64x);
   std::fflush(stdout);
 }
 
@@ -117,6 +129,7 @@ Options parse(int argc, char** argv) {
     if (argument == "--frames" && has_value) options.frames = std::max(1, std::atoi(argv[++i]));
     else if (argument == "--smoke") options.smoke = true;
     else if (argument == "--no-memory") options.memory = false;
+    else if (argument == "--aa-images" && has_value) options.aa_images = argv[++i];
     else if (argument == "--child-video" && has_value) options.child_seconds = std::atoi(argv[++i]);
     else if (argument == "--work" && has_value) options.work = argv[++i];
     else {
@@ -154,21 +167,36 @@ int main(int argc, char** argv) {
     std::printf("machine: %u cores; LP_NUM_THREADS=%s LP_NATIVE_VECTOR_WIDTH=%s; load average at start %s\n",
                 std::thread::hardware_concurrency(), env_or("LP_NUM_THREADS", "(all cores)"),
                 env_or("LP_NATIVE_VECTOR_WIDTH", "(native)"), load_average().c_str());
-    std::printf("\n| %-44s | %8s | %8s | %8s |\n", "phase", "frames/s", "ms/frame", "cpu ms");
-    std::printf("|%s|%s|%s|%s|\n", std::string(46, '-').c_str(), std::string(10, '-').c_str(),
-                std::string(10, '-').c_str(), std::string(10, '-').c_str());
+    std::printf("\n| %-44s | %8s | %8s | %8s | %9s | %9s |\n", "phase", "frames/s", "ms/frame", "cpu ms", "error 16x",
+                "error 64x");
+    std::printf("|%s|%s|%s|%s|%s|%s|\n", std::string(46, '-').c_str(), std::string(10, '-').c_str(),
+                std::string(10, '-').c_str(), std::string(10, '-').c_str(), std::string(11, '-').c_str(),
+                std::string(11, '-').c_str());
 
-    bench::BenchSettings tessellated = settings, single = settings;
+    bench::BenchSettings msaa = settings, tessellated = settings, single = settings;
+    msaa.renderer.antialiasing = render::Antialiasing::msaa;
+    msaa.renderer.samples = 4;
+    tessellated.renderer = msaa.renderer;
     tessellated.renderer.spheres = render::SphereMethod::tessellated;
-    single.renderer.samples = 0;
-    row("draw, 4x MSAA, sphere impostors (default)", bench::time_drawing(settings, frames));
-    row("draw, 4x MSAA, tessellated spheres", bench::time_drawing(tessellated, frames));
-    row("draw, no anti-aliasing (for reference)", bench::time_drawing(single, frames));
+    single.renderer.antialiasing = render::Antialiasing::none;
+    auto image = [&](const char* name) {
+      if (options.aa_images.empty()) return std::string();
+      fs::create_directories(options.aa_images);
+      return (fs::path(options.aa_images) / (std::string(name) + ".png")).string();
+    };
+    const bench::ColourError edges_error = bench::colour_error(settings, image("edges"));
+    const bench::ColourError msaa_error = bench::colour_error(msaa, image("msaa4"));
+    row("draw, edge AA, sphere impostors (default)", bench::time_drawing(settings, frames), edges_error);
+    row("draw, 4x MSAA, sphere impostors", bench::time_drawing(msaa, frames), msaa_error);
+    row("draw, 4x MSAA, tessellated spheres", bench::time_drawing(tessellated, frames),
+        bench::colour_error(tessellated, image("msaa4_tessellated")));
+    row("draw, no anti-aliasing", bench::time_drawing(single, frames), bench::colour_error(single, image("none")));
     row("overlay (cairo) onto the frame", bench::time_overlay(settings, frames));
     const std::string encode = "encode (RGBA -> yuv420p, libx264 " + settings.video().preset + ")";
     row(encode.c_str(), bench::time_encoding(settings, frames, video));
     const bench::Timing ours = bench::time_end_to_end(settings, frames, video);
-    row("end to end to MP4 (impulse)", ours);
+    row("end to end to MP4 (impulse, edge AA)", ours);
+    row("end to end to MP4, 4x MSAA", bench::time_end_to_end(msaa, frames, video));
     bench::Timing naive;
     bool have_naive = true;
     try {
@@ -180,6 +208,11 @@ int main(int argc, char** argv) {
       std::printf("| %-44s | %8s | %8s | %8s |\n", "naive peer: skipped", "-", "-", "-");
       std::printf("  (%s)\n", error.what());
     }
+    std::printf("\nanti-aliasing: edge AA's error %.4f against 4x MSAA's %.4f (16x reference; 64x: %.4f against %.4f); "
+                "goal: no worse\n", edges_error.against_16x, msaa_error.against_16x, edges_error.against_64x,
+                msaa_error.against_64x);
+    std::printf("end to end with edge AA: %.1f frames/s at %dx%d (goal: >= 60)\n", ours.frames_per_second(),
+                settings.width, settings.height);
     if (have_naive && naive.frames_per_second() > 0)
       std::printf("\nend to end: %.1f frames/s = %.2fx the naive peer (goal: >= 30 frames/s and >= 3x)\n",
                   ours.frames_per_second(), ours.frames_per_second() / naive.frames_per_second());

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "demos/film/frame_pipeline.h"
+#include "render/antialias_reference.h"
 #include "render/overlay_painter.h"
 #include "render/png_io.h"
 #include "tests/bench/bench_frame.h"
@@ -73,6 +74,19 @@ Timing time_drawing(const BenchSettings& settings, int frames) {
   const Stopwatch watch;
   for (int i = 0; i < frames; ++i) renderer.draw_into(bench_draw_list(frame_time(i, settings.fps)), frame);
   return watch.stop(frames);
+}
+
+ColourError colour_error(const BenchSettings& settings, const std::string& image_path) {
+  const render::DrawList scene = bench_draw_list(0);
+  const render::Frame reference = render::supersampled_reference(settings.width, settings.height, settings.renderer, scene);
+  const render::Frame fine = render::supersampled_reference(settings.width, settings.height, settings.renderer, scene, 8);
+  render::Renderer renderer(settings.width, settings.height, settings.renderer);
+  const render::Frame& frame = renderer.draw(scene);
+  if (!image_path.empty()) {
+    render::write_png(image_path, frame);
+    render::write_png(std::filesystem::path(image_path).replace_extension(".reference.png").string(), reference);
+  }
+  return {render::mean_colour_error(frame, reference), render::mean_colour_error(frame, fine)};
 }
 
 Timing time_overlay(const BenchSettings& settings, int frames) {

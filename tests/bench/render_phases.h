@@ -25,6 +25,14 @@ struct BenchSettings {
 };
 
 Timing time_drawing(const BenchSettings& settings, int frames);
+// The mean colour error (0..255 a channel) of the benchmark's first frame drawn with `settings`
+// against its 16x and its 64x supersampled references (render/antialias_reference.h) drawn with
+// the same shadows and spheres. With `image_path`, also writes that frame there as PNG, and the
+// 16x reference beside it (NAME.reference.png).
+struct ColourError {
+  double against_16x = 0, against_64x = 0;
+};
+ColourError colour_error(const BenchSettings& settings, const std::string& image_path = "");
 Timing time_overlay(const BenchSettings& settings, int frames);
 Timing time_encoding(const BenchSettings& settings, int frames, const std::string& path);
 // Draws, paints the overlay and encodes `frames` frames through demos::FramePipeline.

@@ -1,5 +1,6 @@
 // The command line itself: options after the subcommand; every command's --help with examples and
 // exit codes.
+#include "demos/program.h"
 #include "tests/program/in_process.h"
 #include "tests/program/program_test_files.h"
 
@@ -25,6 +26,54 @@ TEST(Cli, OptionsWorkAfterTheSubcommandAndHelpShowsExamplesAndExitCodes) {
   EXPECT_NE(none.stderr_text.find("A subcommand is required"), std::string::npos) << none.stderr_text;
   const testing::ProgramRun unknown = run_in_process({"frobnicate"});
   EXPECT_EQ(unknown.exit_code, 1) << unknown.describe();
+}
+
+// --antialias chooses; --samples alone still means multisampling; the two saying different things
+// are refused before anything is drawn.
+TEST(Cli, AntialiasAndSamplesChooseTheAntiAliasingAndContradictionsAreRefused) {
+  const fs::path dir = work_directory();
+  std::ofstream(dir / "slide.toml") << kSlide;
+  const std::string scene = (dir / "slide.toml").string();
+  auto render = [&](const std::string& name, std::vector<std::string> options) {
+    std::vector<std::string> arguments = {"-q", "render", scene, "--width", "64", "--height", "48", "--fps", "5",
+                                          "-o", (dir / name).string()};
+    arguments.insert(arguments.end(), options.begin(), options.end());
+    return run_in_process(arguments);
+  };
+  for (const auto& [name, options] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {"edges.mp4", {}}, {"msaa.mp4", {"--antialias", "msaa"}}, {"eight.mp4", {"--samples", "8"}},
+           {"none.mp4", {"--antialias", "none"}}, {"zero.mp4", {"--samples", "0"}}}) {
+    const ProgramRun run = render(name, options);
+    EXPECT_TRUE(run.succeeded()) << name << ": " << run.describe();
+    EXPECT_TRUE(fs::exists(dir / name)) << name;
+  }
+  const ProgramRun contradiction = render("refused.mp4", {"--antialias", "edges", "--samples", "4"});
+  EXPECT_EQ(contradiction.exit_code, 1) << contradiction.describe();
+  EXPECT_NE(contradiction.stderr_text.find("--samples"), std::string::npos) << contradiction.stderr_text;
+  EXPECT_NE(contradiction.stderr_text.find("--antialias msaa"), std::string::npos) << contradiction.stderr_text;
+  EXPECT_FALSE(fs::exists(dir / "refused.mp4"));
+  // What each choice gives the renderer.
+  auto chosen = [](const std::string& antialias, std::optional<int> samples) {
+    demos::VideoOverrides overrides;
+    overrides.antialias = antialias;
+    overrides.samples = samples;
+    demos::Scene any_scene;
+    demos::RenderOptions options;
+    overrides.apply(any_scene, options);
+    return options.renderer;
+  };
+  using render::Antialiasing;
+  EXPECT_EQ(chosen("", std::nullopt).antialiasing, Antialiasing::edges);
+  EXPECT_EQ(chosen("msaa", std::nullopt).antialiasing, Antialiasing::msaa);
+  EXPECT_EQ(chosen("msaa", std::nullopt).samples, 4);
+  EXPECT_EQ(chosen("", 8).antialiasing, Antialiasing::msaa);
+  EXPECT_EQ(chosen("msaa", 2).samples, 2);
+  EXPECT_EQ(chosen("", 0).antialiasing, Antialiasing::none);
+  EXPECT_EQ(chosen("none", std::nullopt).antialiasing, Antialiasing::none);
+  EXPECT_EQ(chosen("edges", std::nullopt).antialiasing, Antialiasing::edges);
+  const ProgramRun unknown = render("unknown.mp4", {"--antialias", "fxaa"});
+  EXPECT_EQ(unknown.exit_code, 1) << unknown.describe();
+  EXPECT_NE(unknown.stderr_text.find("--antialias"), std::string::npos) << unknown.stderr_text;
 }
 
 }  // namespace

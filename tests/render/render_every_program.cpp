@@ -28,15 +28,21 @@ struct Variant {
   render::RendererSettings settings;
 };
 
+using render::Antialiasing;
 const Variant kVariants[] = {
-    {"impostors_ground_shadows", {.samples = 4, .shadows = render::ShadowMethod::ground,
-                                  .spheres = render::SphereMethod::impostor}},
-    {"icospheres_shadow_map", {.samples = 4, .shadows = render::ShadowMethod::shadow_map, .shadow_map_size = 512,
+    {"impostors_ground_shadows", {.antialiasing = Antialiasing::msaa, .samples = 4,
+                                  .shadows = render::ShadowMethod::ground, .spheres = render::SphereMethod::impostor}},
+    {"icospheres_shadow_map", {.antialiasing = Antialiasing::msaa, .samples = 4,
+                               .shadows = render::ShadowMethod::shadow_map, .shadow_map_size = 512,
                                .spheres = render::SphereMethod::tessellated}},
-    {"impostors_shadow_map_no_msaa", {.samples = 0, .shadows = render::ShadowMethod::shadow_map,
+    {"impostors_shadow_map_no_msaa", {.antialiasing = Antialiasing::none, .shadows = render::ShadowMethod::shadow_map,
                                       .shadow_map_size = 512, .spheres = render::SphereMethod::impostor}},
-    {"icospheres_no_shadows_no_msaa", {.samples = 0, .shadows = render::ShadowMethod::none,
+    {"icospheres_no_shadows_no_msaa", {.antialiasing = Antialiasing::none, .shadows = render::ShadowMethod::none,
                                        .spheres = render::SphereMethod::tessellated}},
+    {"impostors_ground_shadows_edges", {.antialiasing = Antialiasing::edges, .shadows = render::ShadowMethod::ground,
+                                        .spheres = render::SphereMethod::impostor}},
+    {"icospheres_shadow_map_edges", {.antialiasing = Antialiasing::edges, .shadows = render::ShadowMethod::shadow_map,
+                                     .shadow_map_size = 512, .spheres = render::SphereMethod::tessellated}},
 };
 
 // Each frame moves the camera, so the kept background is redrawn too.
