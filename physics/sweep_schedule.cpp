@@ -9,9 +9,6 @@ namespace {
 // Below this many items a part takes a few microseconds to sweep: it is not cut, and a set this
 // small keeps its natural order (but for partners) and one thread.
 constexpr size_t kMinDissectedItems = 256;
-// Cuts below the whole set, at most: up to 2^3 leaves, so up to eight threads share a sweep. Fixed,
-// whatever the thread count: the order must not depend on it.
-constexpr int kDissectionLevels = 3;
 // How far ahead in its part an item's partner may be: near, so that the sweep keeps its order and
 // its place in memory roughly.
 constexpr size_t kPartnerReach = 16;
@@ -32,13 +29,15 @@ Vec3 item_position(const SweepItem& item) {
 // part before it anyway.
 struct Dissection {
   const std::vector<SweepItem>& items;
+  int levels;
   std::vector<uint8_t> part;            // per item
   std::vector<int> leaf_of_part;
   std::vector<uint8_t> is_crossing;     // per part
   std::vector<uint8_t> crossed;         // per body: moved by a crossing item
   int leaves = 0;
 
-  Dissection(const std::vector<SweepItem>& all, int body_count) : items(all), part(all.size(), 0), crossed(body_count, 0) {}
+  Dissection(const std::vector<SweepItem>& all, int body_count, int most_levels)
+      : items(all), levels(most_levels), part(all.size(), 0), crossed(body_count, 0) {}
 
   int new_part(int leaf, bool crossing) {
     leaf_of_part.push_back(leaf);
@@ -47,7 +46,7 @@ struct Dissection {
   }
 
   void cut(const std::vector<int>& members, int level) {
-    if (level > kDissectionLevels || members.size() < kMinDissectedItems) {
+    if (level > levels || members.size() < kMinDissectedItems) {
       const int leaf = leaves++, free = new_part(leaf, false), after_crossing = new_part(leaf, false);
       for (const int i : members) {
         const SweepItem& item = items[i];
@@ -89,7 +88,7 @@ struct Dissection {
 
 }  // namespace
 
-void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, int threads) {
+void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, int threads, int levels) {
   const size_t count = items.size();
   order_.resize(count);
   slot_of_body_.resize(body_count);
@@ -97,7 +96,7 @@ void SweepSchedule::plan(const std::vector<SweepItem>& items, int body_count, in
   for (int body = 0; body < body_count; ++body) slot_of_body_[body] = body_of_slot_[body] = body;
   lists_.clear();
   team_size_ = threads;
-  Dissection dissection(items, body_count);
+  Dissection dissection(items, body_count, std::clamp(levels, 1, 7));
   std::vector<int> all(count);
   for (size_t i = 0; i < count; ++i) all[i] = int(i);
   dissection.cut(all, 1);

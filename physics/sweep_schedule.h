@@ -1,8 +1,8 @@
 // The order of a Gauss-Seidel sweep over the manifolds, and how the threads of a ThreadTeam share
 // it without changing a bit of the result.
 //
-// A large set is cut in two along its longest axis, and each half again, to at most three levels
-// (nested dissection: up to eight leaves). The order is the tree's, depth first: a node's crossing
+// A large set is cut in two along its longest axis, and each half again, to a fixed number of
+// levels (nested dissection: the world's one cut, up to 2^levels leaves). The order is the tree's, depth first: a node's crossing
 // manifolds (those that join bodies on both sides of its cut), then its left subtree, then its
 // right; in a leaf, last the manifolds that move a body of a crossing one. The tree depends on the
 // bodies only, never on the thread count, so one thread and many give the same results. Threads
@@ -37,7 +37,15 @@ class SweepSchedule {
  public:
   // Orders the sweeps over `items` (given in their natural order), shares them among `threads`
   // and gives each of the `body_count` bodies its slot.
-  void plan(const std::vector<SweepItem>& items, int body_count, int threads);
+  // `levels` of cuts at most (up to 2^levels leaves, the most threads that share a sweep): fixed
+  // for a world, whatever its thread count, as the order depends on it.
+  void plan(const std::vector<SweepItem>& items, int body_count, int threads, int levels = kWorldLevels);
+  // The world's: one cut, two leaves. Deeper cuts let up to eight threads share (3 levels, tested),
+  // but cost two threads 10-15 % (the 210 pyramid, the heap of boxes): a subtree's first items wait
+  // for the crossing ones above it, solved at the same moment by another thread. Ordering them last
+  // in their subtree (not only in their leaf) is the next step; measured gains need more than the
+  // two cores of these machines.
+  static constexpr int kWorldLevels = 1;
   bool parallel() const { return lists_.size() > 1; }
   // Whether a place is solved side by side with the next.
   bool paired(int place) const { return paired_[place] != 0; }

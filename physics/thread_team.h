@@ -27,7 +27,7 @@ class SpinBudget {
 };
 
 // A counter that one thread raises and others wait on, spinning then sleeping (sweep_schedule.h's
-// progress). raise() is a plain store unless somebody sleeps.
+// progress). raise() is a plain store unless somebody sleeps; a sleeper looks again every 200 µs.
 class alignas(64) WaitableCounter {
  public:
   uint64_t load() const { return value_.load(std::memory_order_acquire); }
@@ -37,7 +37,7 @@ class alignas(64) WaitableCounter {
  private:
   std::atomic<uint64_t> value_{0};
   mutable std::atomic<uint32_t> sleepers_{0};
-  std::atomic<uint32_t> wakes_{0};  // 32 bits: a futex of its own to sleep on
+  mutable std::atomic<uint32_t> wakes_{0};  // 32 bits: a futex of its own to sleep on
 };
 
 class ThreadTeam {

@@ -13,6 +13,7 @@ namespace impulse::physics {
 namespace {
 
 constexpr int kSide = 30;  // a kSide x kSide grid of bodies on the ground
+constexpr int kLevels = 3;  // cut to eight leaves (the world cuts once: SweepSchedule::kWorldLevels)
 
 // Contacts of a floor of boxes: each with its right and its far neighbour, and every third with
 // the ground (-1, which never moves); sizes of one to four points, as manifolds have.
@@ -46,14 +47,14 @@ TEST(SweepSchedule, TheOrderIsEveryItemOnceAndTheSameForAnyThreadCount) {
   const std::vector<SweepItem> items = floor_items();
   ASSERT_GT(items.size(), 2000u);  // large enough to be cut to eight leaves
   SweepSchedule one;
-  one.plan(items, kSide * kSide, 1);
+  one.plan(items, kSide * kSide, 1, kLevels);
   EXPECT_FALSE(one.parallel());
   std::vector<int> sorted = one.order();
   std::sort(sorted.begin(), sorted.end());
   for (size_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], int(i));
   for (const int threads : {2, 3, 4, 8, 12}) {
     SweepSchedule shared;
-    shared.plan(items, kSide * kSide, threads);
+    shared.plan(items, kSide * kSide, threads, kLevels);
     EXPECT_TRUE(shared.parallel()) << threads << " threads";
     EXPECT_EQ(one.order(), shared.order()) << threads << " threads";
   }
@@ -62,12 +63,12 @@ TEST(SweepSchedule, TheOrderIsEveryItemOnceAndTheSameForAnyThreadCount) {
 TEST(SweepSchedule, OnAnyThreadCountEveryBodyReceivesItsItemsInTheSweepsOrder) {
   const std::vector<SweepItem> items = floor_items();
   SweepSchedule serial;
-  serial.plan(items, kSide * kSide, 1);
+  serial.plan(items, kSide * kSide, 1, kLevels);
   Received expected{serial, items};
   for (int place = 0; place < int(serial.order().size()); ++place) expected(place, 1);
   for (const int threads : {2, 3, 4, 8}) {  // more than this machine's cores: waits sleep
     SweepSchedule shared;
-    shared.plan(items, kSide * kSide, threads);
+    shared.plan(items, kSide * kSide, threads, kLevels);
     ThreadTeam team(threads);
     for (int sweep = 0; sweep < 20; ++sweep) {  // epochs: each sweep waits only for its own places
       Received received{shared, items};
@@ -82,7 +83,7 @@ TEST(SweepSchedule, EveryThreadUpToEightSweepsAFairShare) {
   const std::vector<SweepItem> items = floor_items();
   for (const int threads : {2, 3, 4, 8}) {
     SweepSchedule schedule;
-    schedule.plan(items, kSide * kSide, threads);
+    schedule.plan(items, kSide * kSide, threads, kLevels);
     std::vector<int> places(threads, 0);  // each thread counts only its own
     ThreadTeam team(threads);
     const uint64_t epoch = schedule.new_epochs(1);
@@ -96,7 +97,7 @@ TEST(SweepSchedule, ItemsSolvedSideBySideShareNoBodyAndHaveOneSize) {
   const std::vector<SweepItem> items = floor_items();
   for (const int threads : {1, 2}) {
     SweepSchedule schedule;
-    schedule.plan(items, kSide * kSide, threads);
+    schedule.plan(items, kSide * kSide, threads, kLevels);
     int pairs = 0;
     for (int place = 0; place + 1 < int(schedule.order().size()); ++place) {
       if (!schedule.paired(place)) continue;
@@ -119,7 +120,7 @@ TEST(SweepSchedule, SlotsAndBodiesAreInversePermutations) {
   const std::vector<SweepItem> items = floor_items();
   for (const int threads : {1, 2, 3, 8}) {
     SweepSchedule schedule;
-    schedule.plan(items, kSide * kSide, threads);
+    schedule.plan(items, kSide * kSide, threads, kLevels);
     ASSERT_EQ(schedule.slots().size(), size_t(kSide * kSide));
     for (int body = 0; body < kSide * kSide; ++body) EXPECT_EQ(schedule.bodies()[schedule.slots()[body]], body);
     std::vector<int> seen(kSide * kSide, 0);
