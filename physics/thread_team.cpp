@@ -81,7 +81,7 @@ void WaitableCounter::wait_until_at_least(uint64_t target, int threads) const {
   sleepers_.fetch_sub(1, std::memory_order_relaxed);
 }
 
-ThreadTeam::ThreadTeam(int size) {
+ThreadTeam::ThreadTeam(int size) : size_(std::max(size, 1)) {
   for (int member = 1; member < size; ++member) helpers_.emplace_back([this, member] { serve(member); });
 }
 
@@ -95,12 +95,12 @@ ThreadTeam::~ThreadTeam() {
 int ThreadTeam::default_size() { return hardware_threads(); }
 
 void ThreadTeam::run(const std::function<void(int)>& job) {
-  if (helpers_.empty()) {
+  if (size_ == 1) {
     job(0);
     return;
   }
   job_ = &job;
-  pending_.store(int(helpers_.size()), std::memory_order_relaxed);
+  pending_.store(size_ - 1, std::memory_order_relaxed);
   generation_.fetch_add(1, std::memory_order_release);
   generation_.notify_all();
   job(0);
@@ -108,7 +108,7 @@ void ThreadTeam::run(const std::function<void(int)>& job) {
 }
 
 void ThreadTeam::barrier() {
-  if (helpers_.empty()) return;
+  if (size_ == 1) return;
   const uint32_t phase = barrier_phase_.load(std::memory_order_acquire);
   if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == size()) {
     arrived_.store(0, std::memory_order_relaxed);

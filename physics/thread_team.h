@@ -48,7 +48,7 @@ class ThreadTeam {
   ThreadTeam(const ThreadTeam&) = delete;
   ThreadTeam& operator=(const ThreadTeam&) = delete;
 
-  int size() const { return int(helpers_.size()) + 1; }
+  int size() const { return size_; }
 
   // Runs job(member) on every member, 0 on the caller, and returns when all have finished.
   void run(const std::function<void(int)>& job);
@@ -61,6 +61,7 @@ class ThreadTeam {
  private:
   void serve(int member);
 
+  const int size_;  // set before the helpers start: they read it while helpers_ still grows
   std::vector<std::thread> helpers_;
   const std::function<void(int)>* job_ = nullptr;
   std::atomic<uint32_t> generation_{0};
