@@ -2,72 +2,88 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
+#include <bit>
 #include <cstring>
+#include <vector>
 
 namespace impulse::render {
 namespace {
 
 enum Direction { kPlusX, kMinusX, kPlusY, kMinusY };
-constexpr Direction kOpposite[4] = {kMinusX, kPlusX, kMinusY, kPlusY};
 
 // Parts in units of 1/510 of a pixel: an outline stored as s (distance d = 1 - s/255) crossing this
 // pixel gives the part 1/2 - d = (2s - 255)/510 beyond it; a neighbour's stored as t reaching into
 // this pixel gives d - 1/2 = (255 - 2t)/510. Integers, so a pixel costs a few instructions.
 constexpr int kWhole = 510;
 
-// The part of the pixel at (x, y) to take from its neighbour in each direction (0 where there is none).
+// The part of a pixel beyond its own outline stored as `mine`, or beyond its neighbour's outline
+// towards it stored as `theirs`, whichever is larger (0: none).
+inline int part_of(uint8_t mine, uint8_t theirs) {
+  const int own = 2 * int(mine) - 255;                       // > 0: d < 1/2
+  const int reaching = theirs != kNoEdge ? 255 - 2 * int(theirs) : 0;  // > 0: d > 1/2
+  return std::max({own, reaching, 0});
+}
+
+// The parts of the pixel at (x, y) to take from its neighbour in each direction (0 where there is none).
 std::array<int, 4> parts_at(const uint8_t* edges, int x, int y, int width, int height) {
-  const size_t index = size_t(y) * size_t(width) + size_t(x);
-  const uint8_t* own = edges + 4 * index;
-  const bool has[4] = {x + 1 < width, x > 0, y + 1 < height, y > 0};
-  const std::ptrdiff_t step[4] = {1, -1, width, -width};
+  const uint8_t* own = edges + 4 * (size_t(y) * size_t(width) + size_t(x));
+  const std::ptrdiff_t row = 4 * std::ptrdiff_t(width);
   std::array<int, 4> parts{};
-  for (int direction = 0; direction < 4; ++direction) {
-    if (!has[direction]) continue;
-    const int mine = 2 * int(own[direction]) - 255;  // > 0: d < 1/2
-    // The neighbour's outline towards this pixel, 1/2 .. 1 pixel from its centre, lies in this one.
-    const uint8_t theirs = edges[4 * size_t(std::ptrdiff_t(index) + step[direction]) + size_t(kOpposite[direction])];
-    const int reaching = theirs != kNoEdge ? 255 - 2 * int(theirs) : 0;  // > 0: d > 1/2
-    parts[size_t(direction)] = std::max({mine, reaching, 0});
-  }
+  if (x + 1 < width) parts[kPlusX] = part_of(own[kPlusX], own[4 + kMinusX]);
+  if (x > 0) parts[kMinusX] = part_of(own[kMinusX], own[-4 + kPlusX]);
+  if (y + 1 < height) parts[kPlusY] = part_of(own[kPlusY], own[row + kMinusY]);
+  if (y > 0) parts[kMinusY] = part_of(own[kMinusY], own[-row + kPlusY]);
   return parts;
 }
 
-// True when neither the pixels [x, x + 8) of row y nor their neighbours carry an outline
-// (4 bytes a pixel: 8 pixels are 4 words of 64 bits).
-bool quiet_span(const uint8_t* edges, int x, int y, int width, int height) {
-  auto any = [&](int row, int first, int count) {
-    const uint8_t* p = edges + 4 * (size_t(row) * size_t(width) + size_t(first));
-    uint64_t bits = 0;
-    for (int i = 0; i + 2 <= count; i += 2) {
-      uint64_t word;
-      std::memcpy(&word, p + 4 * i, sizeof word);
-      bits |= word;
-    }
-    if (count % 2 != 0) {
-      uint32_t last;
-      std::memcpy(&last, p + 4 * (count - 1), sizeof last);
-      bits |= last;
-    }
-    return bits != 0;
-  };
-  if (any(y, x, 8)) return false;
-  if (x > 0 && any(y, x - 1, 1)) return false;
-  if (x + 8 < width && any(y, x + 8, 1)) return false;
-  if (y > 0 && any(y - 1, x, 8)) return false;
-  return y + 1 >= height || !any(y + 1, x, 8);
+// The pixel's colour mixed with its neighbours' by `parts` (0 towards a side with no neighbour, whose
+// pointer is then the pixel's own).
+void mix(std::array<int, 4> parts, const uint8_t* self, const uint8_t* right, const uint8_t* left, const uint8_t* up,
+         const uint8_t* down, uint8_t* out) {
+  int taken = parts[0] + parts[1] + parts[2] + parts[3];
+  if (taken <= 0) return;
+  // Outlines across x and across y (a corner): the part beyond both is in each strip, so the
+  // pixel takes x + y - x*y in all (exact for a right-angled corner), shared in proportion.
+  const int across_x = parts[kPlusX] + parts[kMinusX], across_y = parts[kPlusY] + parts[kMinusY];
+  if (across_x > 0 && across_y > 0) {
+    const int beyond = across_x + across_y - across_x * across_y / kWhole;
+    for (int& part : parts) part = part * beyond / taken;
+    taken = parts[0] + parts[1] + parts[2] + parts[3];
+  }
+  if (taken > kWhole) {  // outlines closer than a pixel: shared out
+    for (int& part : parts) part = part * kWhole / taken;
+    taken = parts[0] + parts[1] + parts[2] + parts[3];
+  }
+  const int keep = kWhole - taken;
+  for (int channel = 0; channel < 3; ++channel) {
+    const int mixed = self[channel] * keep + parts[kPlusX] * right[channel] + parts[kMinusX] * left[channel] +
+                      parts[kPlusY] * up[channel] + parts[kMinusY] * down[channel];
+    out[channel] = uint8_t((mixed + kWhole / 2) / kWhole);
+  }
 }
 
-// True when the pixel or a neighbour's side towards it has an outline (4 byte tests, no arithmetic).
-bool near_outline(const uint8_t* edges, int x, int y, int width, int height) {
-  const size_t index = size_t(y) * size_t(width) + size_t(x);
-  uint32_t own;
-  std::memcpy(&own, edges + 4 * index, sizeof own);
-  return own != 0 || (x + 1 < width && edges[4 * (index + 1) + kMinusX] != kNoEdge) ||
-         (x > 0 && edges[4 * (index - 1) + kPlusX] != kNoEdge) ||
-         (y + 1 < height && edges[4 * (index + size_t(width)) + kMinusY] != kNoEdge) ||
-         (y > 0 && edges[4 * (index - size_t(width)) + kPlusY] != kNoEdge);
+// Bit x of word x / 64 set where pixel x of the row has an outline byte (4 bytes a pixel).
+void outline_mask(const uint8_t* row, int width, uint64_t* mask) {
+  for (int first = 0; first < width; first += 64) {
+    uint64_t bits = 0;
+    const int count = std::min(64, width - first);
+    for (int block = 0; block < count; block += 8) {
+      const int block_count = std::min(8, count - block);
+      uint64_t any = 0;
+      for (int i = 0; i < block_count; ++i) {
+        uint32_t word;
+        std::memcpy(&word, row + 4 * size_t(first + block + i), sizeof word);
+        any |= word;
+      }
+      if (any == 0) continue;  // most of a frame: sky, ground, the insides of bodies
+      for (int i = 0; i < block_count; ++i) {
+        uint32_t word;
+        std::memcpy(&word, row + 4 * size_t(first + block + i), sizeof word);
+        bits |= uint64_t(word != 0) << (block + i);
+      }
+    }
+    mask[first / 64] = bits;
+  }
 }
 
 }  // namespace
@@ -77,43 +93,35 @@ void resolve_edges(const uint8_t* colour, const uint8_t* edges, int width, int h
   frame.height = height;
   frame.rgba.resize(size_t(width) * size_t(height) * 4);
   const size_t row_bytes = size_t(width) * 4;
-  const std::ptrdiff_t step[4] = {4, -4, 4 * std::ptrdiff_t(width), -4 * std::ptrdiff_t(width)};
+  // Three rows' outline masks, cycled: the rows below, at and above the one resolved.
+  const int words = (width + 63) / 64;
+  std::vector<uint64_t> masks(3 * size_t(words), 0);
+  auto mask_of = [&](int y) { return masks.data() + size_t(y % 3) * size_t(words); };
+  if (height > 0) outline_mask(edges, width, mask_of(0));
   for (int y = 0; y < height; ++y) {
     // GL's first row is the bottom one; Frame's is the top one.
     uint8_t* out = frame.rgba.data() + size_t(height - 1 - y) * row_bytes;
     const uint8_t* in = colour + size_t(y) * row_bytes;
     std::memcpy(out, in, row_bytes);
-    for (int x = 0; x < width; ++x) {
-      if (x % 8 == 0 && x + 8 <= width && quiet_span(edges, x, y, width, height)) {
-        x += 7;
-        continue;
+    if (y + 1 < height) outline_mask(edges + size_t(y + 1) * row_bytes, width, mask_of(y + 1));
+    // A pixel takes in only from outlines on itself or on its four neighbours' sides towards it.
+    const uint64_t* below = y > 0 ? mask_of(y - 1) : nullptr;
+    const uint64_t* at = mask_of(y);
+    const uint64_t* above = y + 1 < height ? mask_of(y + 1) : nullptr;
+    for (int word = 0; word < words; ++word) {
+      const uint64_t left_carry = word > 0 ? at[word - 1] >> 63 : 0;
+      const uint64_t right_carry = word + 1 < words ? at[word + 1] << 63 : 0;
+      uint64_t near_bits = at[word] | (at[word] << 1) | left_carry | (at[word] >> 1) | right_carry;
+      if (below) near_bits |= below[word];
+      if (above) near_bits |= above[word];
+      while (near_bits != 0) {
+        const int x = 64 * word + std::countr_zero(near_bits);
+        near_bits &= near_bits - 1;
+        if (x >= width) break;
+        const uint8_t* self = in + 4 * size_t(x);
+        mix(parts_at(edges, x, y, width, height), self, x + 1 < width ? self + 4 : self, x > 0 ? self - 4 : self,
+            y + 1 < height ? self + row_bytes : self, y > 0 ? self - row_bytes : self, out + 4 * size_t(x));
       }
-      if (!near_outline(edges, x, y, width, height)) continue;
-      std::array<int, 4> parts = parts_at(edges, x, y, width, height);
-      int taken = parts[0] + parts[1] + parts[2] + parts[3];
-      if (taken <= 0) continue;
-      // Outlines across x and across y (a corner): the part beyond both is in each strip, so the
-      // pixel takes x + y - x*y in all (exact for a right-angled corner), shared in proportion.
-      const int across_x = parts[kPlusX] + parts[kMinusX], across_y = parts[kPlusY] + parts[kMinusY];
-      if (across_x > 0 && across_y > 0) {
-        const int beyond = across_x + across_y - across_x * across_y / kWhole;
-        for (int& part : parts) part = part * beyond / taken;
-        taken = parts[0] + parts[1] + parts[2] + parts[3];
-      }
-      if (taken > kWhole) {  // outlines closer than a pixel: shared out
-        for (int& part : parts) part = part * kWhole / taken;
-        taken = parts[0] + parts[1] + parts[2] + parts[3];
-      }
-      const uint8_t* self = in + 4 * size_t(x);
-      int mixed[3] = {self[0] * (kWhole - taken), self[1] * (kWhole - taken), self[2] * (kWhole - taken)};
-      for (int direction = 0; direction < 4; ++direction) {
-        const int part = parts[size_t(direction)];
-        if (part == 0) continue;  // also where there is no neighbour
-        const uint8_t* other = self + step[direction];
-        for (int channel = 0; channel < 3; ++channel) mixed[channel] += part * other[channel];
-      }
-      for (int channel = 0; channel < 3; ++channel)
-        out[4 * size_t(x) + size_t(channel)] = uint8_t((mixed[channel] + kWhole / 2) / kWhole);
     }
   }
 }
