@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "render/edge_antialias.h"
 
 namespace impulse::render {
 namespace {
@@ -62,9 +61,6 @@ OffscreenTarget::OffscreenTarget(int width, int height, int samples, bool edges)
     require_complete("resolve");
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-
-  bottom_up_pixels_.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
-  if (edges_) bottom_up_edges_.resize(bottom_up_pixels_.size());
 }
 
 void OffscreenTarget::bind_for_drawing() const {
@@ -92,7 +88,7 @@ void OffscreenTarget::clear_edges() const {
   glClearBufferfv(GL_COLOR, 1, none);
 }
 
-void OffscreenTarget::resolve_into(Frame& frame) {
+void OffscreenTarget::read_into(ReadBack& read_back) const {
   if (samples_ > 0) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_.id());
@@ -101,26 +97,21 @@ void OffscreenTarget::resolve_into(Frame& frame) {
   } else {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, multisample_framebuffer_.id());  // one sample: read it as drawn
   }
+  read_back.width = width_;
+  read_back.height = height_;
+  const size_t bytes = static_cast<size_t>(width_) * static_cast<size_t>(height_) * 4;
+  read_back.bottom_up_rgba.resize(bytes);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up_pixels_.data());
-  if (edges_) {
-    glReadBuffer(GL_COLOR_ATTACHMENT1);
-    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up_edges_.data());
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    resolve_edges(bottom_up_pixels_.data(), bottom_up_edges_.data(), width_, height_, frame);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, read_back.bottom_up_rgba.data());
+  if (!edges_) {
+    read_back.bottom_up_edges.clear();
     return;
   }
-
-  // GL's first row is the bottom one; Frame's is the top one.
-  frame.width = width_;
-  frame.height = height_;
-  frame.rgba.resize(bottom_up_pixels_.size());
-  const size_t row_bytes = static_cast<size_t>(width_) * 4;
-  for (int row = 0; row < height_; ++row) {
-    std::memcpy(frame.rgba.data() + static_cast<size_t>(row) * row_bytes,
-                bottom_up_pixels_.data() + static_cast<size_t>(height_ - 1 - row) * row_bytes, row_bytes);
-  }
+  read_back.bottom_up_edges.resize(bytes);
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, read_back.bottom_up_edges.data());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
 }
 
 }  // namespace impulse::render

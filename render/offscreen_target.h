@@ -1,12 +1,9 @@
 // Where the main pass draws: a colour + depth framebuffer, multisampled and then resolved into a
 // single-sample one, or single-sampled and read back as it is; with `edges`, a second colour
-// image (RGBA8) where each pixel's nearest outlines are, which resolve_into anti-aliases the colours
-// with (edge_antialias.h).
+// image (RGBA8) where each pixel's nearest outlines are, read back beside the colours for the CPU
+// to anti-alias them with (read_back.h, edge_antialias.h).
 #pragma once
-#include <cstdint>
-#include <vector>
-
-#include "render/frame.h"
+#include "render/read_back.h"
 #include "render/gl_objects.h"
 
 namespace impulse::render {
@@ -21,8 +18,8 @@ class OffscreenTarget {
   // edge image, if any, is cleared (no outline anywhere).
   void copy_samples_to(const OffscreenTarget& other) const;
   void clear_edges() const;  // with the draw framebuffer bound
-  // Resolves the samples (or anti-aliases by the edges) and reads RGBA, rows top to bottom.
-  void resolve_into(Frame& frame);
+  // Resolves the samples (if any) and reads the colours back, and the edge image if there is one.
+  void read_into(ReadBack& read_back) const;
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -39,8 +36,6 @@ class OffscreenTarget {
   GlFramebuffer multisample_framebuffer_;
   GlRenderbuffer resolved_colour_;
   GlFramebuffer resolved_framebuffer_;
-  std::vector<uint8_t> bottom_up_pixels_;
-  std::vector<uint8_t> bottom_up_edges_;
 };
 
 }  // namespace impulse::render

@@ -327,6 +327,11 @@ const Frame& Renderer::draw(const DrawList& draw_list) {
 }
 
 void Renderer::draw_into(const DrawList& draw_list, Frame& frame) {
+  draw_into(draw_list, read_back_);
+  finish(read_back_, frame);
+}
+
+void Renderer::draw_into(const DrawList& draw_list, ReadBack& read_back) {
   Gpu& gpu = *gpu_;
   gpu.context.make_current();
 
@@ -378,7 +383,7 @@ void Renderer::draw_into(const DrawList& draw_list, Frame& frame) {
   if (draw_list.ground && gpu.settings.shadows == ShadowMethod::ground) gpu.draw_ground_shadows(draw_list);
   gpu.draw_marks();
 
-  gpu.target.resolve_into(frame);
+  gpu.target.read_into(read_back);
   throw_on_gl_error("draw");
 }
 

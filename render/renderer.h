@@ -6,6 +6,7 @@
 
 #include "render/draw_list.h"
 #include "render/frame.h"
+#include "render/read_back.h"
 
 namespace impulse::render {
 
@@ -53,6 +54,10 @@ class Renderer {
   const Frame& draw(const DrawList& draw_list);
   // The same, into a frame of the caller's (resized as needed): lets a pipeline keep several.
   void draw_into(const DrawList& draw_list, Frame& frame);
+  // Draws and reads the image back without its last step on the CPU: render::finish(read_back,
+  // frame), on any thread, then gives what draw_into gives. Lets a pipeline draw the next frame
+  // meanwhile.
+  void draw_into(const DrawList& draw_list, ReadBack& read_back);
 
   // Moves the image by a fraction of a pixel (x right, y down) in every later draw: the
   // supersampled reference draws the frame at 16 such offsets (antialias_reference.h).
@@ -65,6 +70,7 @@ class Renderer {
  private:
   struct Gpu;  // every GL object, behind one pointer so this header stays free of GL
   std::unique_ptr<Gpu> gpu_;
+  ReadBack read_back_;
   Frame frame_;
 };
 

@@ -121,8 +121,10 @@ struct VideoEncoder::State {
     error = av_frame_get_buffer(yuv.get(), 0);
     if (error < 0) fail("cannot allocate a frame", error);
 
+    // Chroma from every pixel, then halved by the filter: swscale's SIMD path for RGBA (its
+    // half-width input is plain C), a quarter faster; luma is the same, chroma within rounding.
     scaler.reset(sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGBA, settings.width, settings.height,
-                                AV_PIX_FMT_YUV420P, SWS_BILINEAR, nullptr, nullptr, nullptr));
+                                AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr));
     if (!scaler) fail("cannot create the RGBA to YUV converter", AVERROR(EINVAL));
     // Full-range RGB in, BT.709 limited-range YUV out, matching the tags above.
     const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);

@@ -15,7 +15,7 @@ struct VideoSettings {
   int height = 720;
   int fps = 30;
   int crf = 20;       // x264 constant rate factor: 0 lossless .. 51 worst; ~18-23 looks clean
-  std::string preset = "superfast";  // x264's speed preset: ultrafast, superfast, veryfast, faster, ... medium
+  std::string preset = "ultrafast";  // x264's speed preset: ultrafast, superfast, veryfast, faster, ... medium
   int threads = 0;                  // x264's threads; 0: its own choice (1.5 per core)
   std::string comment = "";         // the file's comment tag (e.g. how it was made); empty: none
 };

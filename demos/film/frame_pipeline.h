@@ -21,6 +21,7 @@
 
 #include "demos/film/scene_draw_list.h"
 #include "render/frame.h"
+#include "render/read_back.h"
 #include "render/overlay.h"
 
 namespace impulse::demos {
@@ -28,6 +29,10 @@ namespace impulse::demos {
 struct FrameJob {
   int64_t index = 0;  // frames are numbered from 0 in submission order
   render::Frame frame;
+  // With `drawn_unfinished`, the image as read back (Renderer::draw_into), which the worker
+  // finishes into `frame` first (render::finish): the drawing thread goes on to the next frame.
+  render::ReadBack drawn;
+  bool drawn_unfinished = false;
   render::Overlay overlay;
   int video_frame = -1;               // the video's frame number; -1: a still (scene_film.h, Shots)
   double time = 0;                    // simulated s shown

@@ -202,6 +202,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   std::atomic<int> frames_finished{0};
   render::Frame poster_frame;  // kept until the video is complete: a poster only ever sits beside its video
   FramePipeline pipeline(kFramesInFlight, [&](FrameJob& job) {
+    if (job.drawn_unfinished) render::finish(job.drawn, job.frame);
     painter.paint(job.overlay, job.frame);
     if (job.video_frame < 0) {  // a still
       if (!options.png_directory.empty()) render::write_png(still_file(options.png_directory, job.time), job.frame);
@@ -243,8 +244,9 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   render::Frame pane_frame;
   while (std::optional<FilmPicture> picture = pictures.pop()) {
     FrameJob& job = pipeline.acquire();
-    if (picture->panes.size() == 1) {
-      renderer.draw_into(picture->panes.front(), job.frame);
+    job.drawn_unfinished = picture->panes.size() == 1;
+    if (job.drawn_unfinished) {
+      renderer.draw_into(picture->panes.front(), job.drawn);
     } else {
       render::fill(job.frame, video.width, video.height, kBetweenPanes);
       for (size_t i = 0; i < picture->panes.size(); ++i) {
