@@ -281,7 +281,10 @@ void main() {
   vec4 edges = with_edge(kNoEdges, inside);
   if (inside < -1.5 * per_pixel) discard;
   gl_SampleMask[0] = -1;  // well inside: every sample (a shader that writes the mask must always)
-  if (inside < 1.5 * per_pixel) {
+  if (u_sample_count == 1) {
+    // One sample, at the pixel centre (edges or no anti-aliasing): its ray is the one above.
+    if (inside < 0.0) discard;
+  } else if (inside < 1.5 * per_pixel) {
     // Near the outline: one ray per sample, through the quad's plane (linear, so derivatives
     // are exact).
     vec3 step_x = dFdx(v_world);
@@ -398,7 +401,9 @@ void main() {
     float reach = length(abs(step_x) + abs(step_y));  // about a pixel, in disc units
     float radius = length(v_disc);
     if (radius > 1.0 + reach) discard;
-    if (radius > 1.0 - reach) {  // near the edge: test each sample
+    if (u_sample_count == 1) {  // one sample, at the pixel centre
+      if (dot(v_disc, v_disc) > 1.0) discard;
+    } else if (radius > 1.0 - reach) {  // near the edge: test each sample
       int mask = 0;
       for (int i = 0; i < u_sample_count; ++i) {
         vec2 p = v_disc + step_x * u_sample_offsets[i].x + step_y * u_sample_offsets[i].y;
