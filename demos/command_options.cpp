@@ -60,7 +60,7 @@ void add_video_options(CLI::App* command, VideoOverrides& overrides) {
   command->add_option("--crf", overrides.crf, "H.264 constant rate factor: 0 lossless .. 51 worst; 18-23 look clean")
       ->check(CLI::Range(0, 51));
   command->add_option("--x264-preset", overrides.x264_preset,
-                      "Encoder speed against file size: ultrafast (default), superfast (files 1.2-2.3x smaller, "
+                      "Encoder speed against file size: ultrafast (default), superfast (files 1.3-1.9x smaller, "
                       "twice the encoding time), veryfast (smaller still, slower), ... medium")
       ->check(CLI::IsMember({"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}));
   command->add_option("--antialias", overrides.antialias,

@@ -26,7 +26,7 @@ struct VideoSetting {
   int height = 720;   // even
   int fps = 30;
   int crf = 20;       // x264 constant rate factor: 0 lossless .. 51 worst
-  std::string preset = "ultrafast";  // x264's speed preset: half superfast's encoding time, files 1.2-2.3x as large
+  std::string preset = "ultrafast";  // x264's speed preset: half superfast's encoding time, files 1.3-1.9x as large
 };
 
 // [[caption]]: a line shown from `start` to `end` seconds of simulated time.
