@@ -1,5 +1,5 @@
 // Finds this step's contacts: a broad phase proposes pairs, the narrow phase (collide.h) gives
-// their contact points, or, for a pair whose bodies have not moved relative to each other since
+// their contact points, or, for a pair of boxes that have not moved relative to each other since
 // they were built (within 0.1 um, kRecycleDistance), the same contacts again, carried by body A's motion
 // (contact recycling, Box2D v3.2's).
 #pragma once
@@ -51,19 +51,23 @@ class ContactFinder {
     Quat relative_orientation = Quat::Identity();    // A^-1 B
     Vec3 normal = Vec3::Zero();                      // in A's frame, shared by the pair's contacts
     Real margin = -1;                                // the speculative margin they were built with
-    int first = 0;                                   // in local_[thread]
-    int16_t thread = -1;                             // -1: nothing to recycle
-    int16_t count = 0;
+    int first = 0;                                   // its contacts, in its thread's local_
+    int count = 0;
   };
-  std::vector<Built> built_, previous_built_;        // pairs_[k]'s; last call's
+  struct BuiltRef {                                  // where a pair's Built is
+    int16_t thread = -1;                             // -1: nothing to recycle
+    int index = 0;                                   // in records_[thread]
+  };
+  std::vector<BuiltRef> built_, previous_built_;     // pairs_[k]'s; last call's
+  std::vector<std::vector<Built>> records_, previous_records_;  // per thread
   std::vector<std::vector<LocalContact>> local_, previous_local_;  // per thread
   std::vector<size_t> recycled_per_thread_;
   size_t recycled_ = 0;                              // pairs recycled by the last call
   static Built relative_pose(const Body& a, const Body& b);
-  bool recycle(const std::vector<Body>& bodies, const BodyPair& pair, Real margin, Built& built, int thread,
+  bool recycle(const std::vector<Body>& bodies, const BodyPair& pair, Real margin, BuiltRef& ref, int thread,
                std::vector<Contact>& contacts);
   void note_built(const std::vector<Body>& bodies, const BodyPair& pair, Real margin, const std::vector<Contact>& contacts,
-                  size_t first, Built& built, int thread);
+                  size_t first, BuiltRef& ref, int thread);
 
  public:
   size_t recycled_pairs() const { return recycled_; }  // by the last find()
