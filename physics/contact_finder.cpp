@@ -23,8 +23,6 @@ constexpr size_t kMinPairsPerThread = 128;
 // Hz): at 10 um and 1 um resting heaps, the 210 pyramid and a stack on a slope moved faster than
 // their tests allow; at 0.1 um every test holds.
 constexpr Real kRecycleDistance = 1e-7;  // m
-// Pairs whose bodies may move more than this in a step (motion_bound) keep no record to recycle.
-constexpr Real kRecordMotion = 10 * kRecycleDistance;  // m
 
 }  // namespace
 
@@ -73,12 +71,7 @@ void ContactFinder::find(const std::vector<Body>& bodies, const std::vector<uint
       }
       const size_t first = contacts.size();
       collide(bodies[pair.a], pair.a, bodies[pair.b], pair.b, margin, contacts, &caches_[k]);
-      // A record only where the bodies are slow enough for it to be used (a sinking pyramid's boxes
-      // are not: its records cost the 5050-box pyramid 9 MiB and 4 % of its time for nothing).
-      if (boxes && motion_bounds_[pair.a] + motion_bounds_[pair.b] < kRecordMotion)
-        note_built(bodies, pair, margin, contacts, first, built_[k], thread);
-      else
-        built_[k] = BuiltRef{};
+      if (boxes) note_built(bodies, pair, margin, contacts, first, built_[k], thread);
     }
   };
   if (threads < 2) {

@@ -61,13 +61,12 @@ TwoCalls find_after(const std::vector<Body>& before, const std::vector<Body>& af
   return out;
 }
 
-// Still, then moved together, as one rigid body (turned and shifted), the bodies keep their relative poses:
+// Moved together, as one rigid body (turned and shifted), the bodies keep their relative poses:
 // the pairs' contacts are recycled, carried by their body A, and agree with a fresh narrow phase
 // but for rounding (the same pairs, points, normals and separations to 1e-9).
 TEST(ContactFinder, BodiesMovedRigidlyKeepTheirContactsRecycled) {
   std::vector<uint8_t> awake;
-  auto before = random_bodies(5, awake);
-  for (Body& body : before) body.velocity = body.angular_velocity = Vec3::Zero();  // moving pairs keep no record
+  const auto before = random_bodies(5, awake);
   const Quat turn(Eigen::AngleAxis<Real>(0.3, Vec3(1, 2, 3).normalized()));
   const Vec3 shift(0.4, -0.2, 0.7);
   auto after = before;
@@ -78,7 +77,7 @@ TEST(ContactFinder, BodiesMovedRigidlyKeepTheirContactsRecycled) {
   }
   for (int threads : {1, 2, 3}) {
     const TwoCalls calls = find_after(before, after, awake, threads);
-    EXPECT_GT(calls.recycled_pairs, 400u) << threads << " threads";
+    EXPECT_GT(calls.recycled_pairs, 500u) << threads << " threads";
     ASSERT_EQ(calls.recycled.size(), calls.fresh.size()) << threads << " threads";
     for (size_t k = 0; k < calls.fresh.size(); ++k) {
       const Contact& r = calls.recycled[k];
