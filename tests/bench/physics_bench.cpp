@@ -7,6 +7,7 @@
 //   physics_bench --quick         every scene for a few steps (a smoke test)
 //   physics_bench --scene NAME    one scene: stack-10, stack-20, pyramid, large-pyramid, boxes, spheres
 //   physics_bench --threads N     impulse's world.threads (default 0: one per core, shared while faster)
+//   physics_bench --impulse-only  impulse alone, no peers (A/B runs of two builds of impulse)
 #include "tests/bench/physics_scenes.h"
 
 #include <sys/resource.h>
@@ -57,10 +58,12 @@ constexpr bool kHaveBox3D = true;
 constexpr bool kHaveBox3D = false;
 #endif
 
+bool impulse_only = false;  // --impulse-only: the peers are not run
+
 struct Measured {
   RunResult result;
   double peak_mib = 0;
-  bool absent = false;  // the engine is not in this build (Box3D without ../shared/peers/box3d)
+  bool absent = false;  // the engine is not in this build (Box3D without ../shared/peers/box3d) or not asked for
 };
 
 // The runs of SCENES.md, in its order; then boxes and spheres with sleeping off, which the
@@ -193,8 +196,8 @@ void print_row(const Run& run, EngineId engine, const Measured& m, std::optional
   const std::string length = first ? run_length(run.steps) : "";
   const char* sleep = first ? (run.sleep ? "on" : "off") : "";
   if (m.absent) {
-    std::printf("%-14s %6s %-9s %-5s %-8s absent: built without ../shared/peers/box3d\n", scene.c_str(), bodies.c_str(),
-                length.c_str(), sleep, engine_name(engine));
+    std::printf("%-14s %6s %-9s %-5s %-8s absent: %s\n", scene.c_str(), bodies.c_str(), length.c_str(), sleep, engine_name(engine),
+                impulse_only ? "not run (--impulse-only)" : "built without ../shared/peers/box3d");
     return;
   }
   if (!r.ok) {
@@ -311,10 +314,11 @@ void print_growth(const std::vector<Outcome>& outcomes) {
 
 int usage(const char* program, FILE* to) {
   std::fprintf(to,
-               "usage: %s [--quick] [--scene NAME]... [--threads N]\n"
+               "usage: %s [--quick] [--scene NAME]... [--threads N] [--impulse-only]\n"
                "  --quick        every run cut to 30 steps (large-pyramid: 5), for a smoke test\n"
                "  --scene NAME   only this scene (repeatable): stack-10, stack-20, pyramid, large-pyramid, boxes, spheres\n"
                "  --threads N    impulse's world.threads: N always share (default 0: one per core, shared while faster)\n"
+               "  --impulse-only impulse alone, without Bullet and Box3D (to compare two builds of impulse)\n"
                "The default is the whole table of ../shared/bench/SCENES.md; it takes several minutes.\n",
                program);
   return to == stderr ? 2 : 0;
@@ -341,6 +345,8 @@ int main(int argc, char** argv) {
       only.insert(name);
     } else if (arg == "--threads" && i + 1 < argc) {
       impulse_threads = std::max(0, std::atoi(argv[++i]));
+    } else if (arg == "--impulse-only") {
+      impulse_only = true;
     } else if (arg == "-h" || arg == "--help") return usage(argv[0], stdout);
     else return usage(argv[0], stderr);
   }
@@ -375,8 +381,8 @@ int main(int argc, char** argv) {
     const Run& run = runs[k];
     Outcome o{run, {}, {}, {}};
     for (EngineId e : kEngines) {
-      if (e == EngineId::box3d && !kHaveBox3D) {
-        o.box3d.absent = true;
+      if ((e == EngineId::box3d && !kHaveBox3D) || (e != EngineId::impulse && impulse_only)) {
+        o.of(e).absent = true;
         continue;
       }
       if (progress)
