@@ -1,6 +1,6 @@
 // The benchmark's scenes in Box3D (the second peer, ../shared/peers/box3d, see its PEER.md):
 // b3DefaultWorldDef() with our gravity and sleeping as the run asks, b3World_Step(world, 1/60, 4)
-// (4 sub-steps is Box3D's default), and as many workers as impulse has threads
+// (4 sub-steps is Box3D's default; --box3d-substeps N sets another), and as many workers as impulse has threads
 // (ThreadTeam::default_size()), run by Box3D's own scheduler: with workerCount > 1 and no task
 // callbacks, b3CreateWorld starts workerCount - 1 threads and the stepping thread is worker 0,
 // as impulse's team counts the caller. Only this file includes Box3D; it is compiled only when
@@ -18,9 +18,9 @@
 
 namespace impulse::bench {
 
-namespace {
+int box3d_substeps = 4;
 
-constexpr int kBox3DSubSteps = 4;
+namespace {
 
 class Box3DEngine {
  public:
@@ -65,7 +65,8 @@ class Box3DEngine {
   Box3DEngine(const Box3DEngine&) = delete;
   Box3DEngine& operator=(const Box3DEngine&) = delete;
 
-  void step() { b3World_Step(world_, float(kTimeStep), kBox3DSubSteps); }
+  void step() { b3World_Step(world_, float(kTimeStep), box3d_substeps); }
+  int substeps() const { return box3d_substeps; }
   V3 position(int i) const {
     const b3Pos p = b3Body_GetPosition(dynamic_[size_t(i)]);
     return {p.x, p.y, p.z};
@@ -94,7 +95,7 @@ void run_box3d(const Scene& scene, const Run& run, RunResult& out) {
 std::string box3d_description() {
   const b3Version v = b3GetVersion();
   return "Box3D " + std::to_string(v.major) + "." + std::to_string(v.minor) + "." + std::to_string(v.revision) + " (" +
-         std::to_string(kBox3DSubSteps) + " sub-steps, " + std::to_string(physics::ThreadTeam::default_size()) +
+         std::to_string(box3d_substeps) + " sub-steps, " + std::to_string(physics::ThreadTeam::default_size()) +
          " workers on its own scheduler, " +
 #ifdef BOX3D_DOUBLE_PRECISION
          "double"

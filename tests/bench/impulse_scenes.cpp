@@ -30,6 +30,7 @@ class ImpulseEngine {
   }
 
   void step() { world_.step(); }
+  int substeps() const { return world_.substeps(); }
   V3 position(int i) const {
     const physics::Vec3& p = world_.bodies()[dynamic_[i]].position;
     return {p.x(), p.y(), p.z()};

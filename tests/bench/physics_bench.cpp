@@ -8,6 +8,7 @@
 //   physics_bench --scene NAME    one scene: stack-10, stack-20, pyramid, large-pyramid, boxes, spheres
 //   physics_bench --threads N     impulse's world.threads (default 0: one per core, shared while faster)
 //   physics_bench --impulse-only  impulse alone, no peers (A/B runs of two builds of impulse)
+//   physics_bench --box3d-substeps N  Box3D with N sub-steps a step (default 4, its own)
 #include "tests/bench/physics_scenes.h"
 
 #include <sys/resource.h>
@@ -181,11 +182,11 @@ std::string asleep_text(const Run& run, const RunResult& r) {
 }
 
 void print_header() {
-  std::printf("%-14s %6s %-9s %-5s %-8s %8s %8s %8s %6s %9s %9s %9s %6s %5s %8s\n", "scene", "bodies", "run", "sleep",
+  std::printf("%-14s %6s %-9s %-5s %-8s %8s %8s %8s %6s %9s %9s %9s %6s %5s %8s %9s\n", "scene", "bodies", "run", "sleep",
               "engine", "median", "p90", "max", "ratio", "top drift", "any drift", "asleep at", "moving", "sunk",
-              "peak MiB");
-  std::printf("%-14s %6s %-9s %-5s %-8s %8s %8s %8s %6s %9s %9s %9s %6s %5s %8s\n", "", "", "", "", "", "ms/step",
-              "ms/step", "ms/step", "i/peer", "m", "m", "", ">5cm/s", "y<0", "");
+              "peak MiB", "sub-steps");
+  std::printf("%-14s %6s %-9s %-5s %-8s %8s %8s %8s %6s %9s %9s %9s %6s %5s %8s %9s\n", "", "", "", "", "", "ms/step",
+              "ms/step", "ms/step", "i/peer", "m", "m", "", ">5cm/s", "y<0", "", "a step");
 }
 
 void print_row(const Run& run, EngineId engine, const Measured& m, std::optional<double> ratio) {
@@ -207,10 +208,12 @@ void print_row(const Run& run, EngineId engine, const Measured& m, std::optional
   }
   char ratio_text[16] = "";
   if (ratio) std::snprintf(ratio_text, sizeof ratio_text, "%.2f", *ratio);
-  std::printf("%-14s %6s %-9s %-5s %-8s %8.3f %8.3f %8.3f %6s %9s %9s %9s %6d %5d %8.1f\n", scene.c_str(),
+  char substeps_text[16] = "-";
+  if (r.substeps > 0) std::snprintf(substeps_text, sizeof substeps_text, "%.1f", r.substeps);
+  std::printf("%-14s %6s %-9s %-5s %-8s %8.3f %8.3f %8.3f %6s %9s %9s %9s %6d %5d %8.1f %9s\n", scene.c_str(),
               bodies.c_str(), length.c_str(), sleep, engine_name(engine), r.median_ms, r.p90_ms, r.max_ms, ratio_text,
               metres(r.top_drift).c_str(), metres(r.any_drift).c_str(), asleep_text(run, r).c_str(), r.moving, r.sunk,
-              m.peak_mib);
+              m.peak_mib, substeps_text);
 }
 
 struct Outcome {
@@ -314,11 +317,12 @@ void print_growth(const std::vector<Outcome>& outcomes) {
 
 int usage(const char* program, FILE* to) {
   std::fprintf(to,
-               "usage: %s [--quick] [--scene NAME]... [--threads N] [--impulse-only]\n"
+               "usage: %s [--quick] [--scene NAME]... [--threads N] [--impulse-only] [--box3d-substeps N]\n"
                "  --quick        every run cut to 30 steps (large-pyramid: 5), for a smoke test\n"
                "  --scene NAME   only this scene (repeatable): stack-10, stack-20, pyramid, large-pyramid, boxes, spheres\n"
                "  --threads N    impulse's world.threads: N always share (default 0: one per core, shared while faster)\n"
                "  --impulse-only impulse alone, without Bullet and Box3D (to compare two builds of impulse)\n"
+               "  --box3d-substeps N  Box3D's sub-steps a step (default 4, its own; more make its contacts stiffer)\n"
                "The default is the whole table of ../shared/bench/SCENES.md; it takes several minutes.\n",
                program);
   return to == stderr ? 2 : 0;
@@ -345,6 +349,13 @@ int main(int argc, char** argv) {
       only.insert(name);
     } else if (arg == "--threads" && i + 1 < argc) {
       impulse_threads = std::max(0, std::atoi(argv[++i]));
+    } else if (arg == "--box3d-substeps" && i + 1 < argc) {
+      const int substeps = std::max(1, std::atoi(argv[++i]));
+#ifdef IMPULSE_BENCH_HAVE_BOX3D
+      box3d_substeps = substeps;
+#else
+      (void)substeps;  // no Box3D in this build: its rows say so
+#endif
     } else if (arg == "--impulse-only") {
       impulse_only = true;
     } else if (arg == "-h" || arg == "--help") return usage(argv[0], stdout);

@@ -72,10 +72,12 @@ struct RunResult {
   double asleep_at = -1;         // s, first time every dynamic body sleeps; -1: never
   int moving = 0;                // dynamic bodies faster than kMovingSpeed at the end
   int sunk = 0;                  // dynamic bodies whose centre ended below the ground's top (y < 0)
+  double substeps = 0;           // solver sub-steps a step, mean over the run; 0: the engine has none
 };
 
 // The loop every engine shares. Engine: step(); V3 position(i) and double speed(i) for dynamic
-// body i (in scene order); bool all_asleep(). Only step() is timed.
+// body i (in scene order); bool all_asleep(); and, if it has them, int substeps() of the last step.
+// Only step() is timed.
 template <class Engine>
 void measure(Engine& engine, const Scene& scene, const Run& run, RunResult& out) {
   const int n = scene.dynamic_count();
@@ -83,12 +85,13 @@ void measure(Engine& engine, const Scene& scene, const Run& run, RunResult& out)
   for (int i = 0; i < n; ++i) start[i] = engine.position(i);
   std::vector<double> ms;
   ms.reserve(run.steps);
-  double top_drift = 0, any_drift = 0;
+  double top_drift = 0, any_drift = 0, substeps = 0;
   for (int s = 0; s < run.steps; ++s) {
     const auto t0 = std::chrono::steady_clock::now();
     engine.step();
     const auto t1 = std::chrono::steady_clock::now();
     ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    if constexpr (requires { engine.substeps(); }) substeps += engine.substeps();
     if (scene.top >= 0) top_drift = std::max(top_drift, distance(engine.position(scene.top), start[scene.top]));
     if (scene.any_drift)
       for (int i = 0; i < n; ++i) any_drift = std::max(any_drift, distance(engine.position(i), start[i]));
@@ -96,6 +99,7 @@ void measure(Engine& engine, const Scene& scene, const Run& run, RunResult& out)
   }
   out.steps = run.steps;
   out.bodies = n;
+  if (run.steps > 0) out.substeps = substeps / run.steps;
   if (scene.top >= 0) out.top_drift = top_drift;
   if (scene.any_drift) out.any_drift = any_drift;
   for (int i = 0; i < n; ++i) {
@@ -123,6 +127,8 @@ extern int impulse_threads;
 void run_bullet(const Scene& scene, const Run& run, RunResult& out);
 std::string bullet_description();  // version and precision
 void run_box3d(const Scene& scene, const Run& run, RunResult& out);
+// Box3D's sub-steps per step (4, its default; --box3d-substeps: the same solver made stiffer).
+extern int box3d_substeps;
 std::string box3d_description();  // version, sub-steps, workers, precision
 
 }  // namespace impulse::bench
