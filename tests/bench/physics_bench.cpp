@@ -9,6 +9,7 @@
 //   physics_bench --threads N     impulse's world.threads (default 0: one per core, shared while faster)
 //   physics_bench --impulse-only  impulse alone, no peers (A/B runs of two builds of impulse)
 //   physics_bench --box3d-substeps N  Box3D with N sub-steps a step (default 4, its own)
+#include "tests/bench/core_latency.h"
 #include "tests/bench/physics_scenes.h"
 
 #include <sys/resource.h>
@@ -65,6 +66,7 @@ struct Measured {
   RunResult result;
   double peak_mib = 0;
   bool absent = false;  // the engine is not in this build (Box3D without ../shared/peers/box3d) or not asked for
+  double round_trip_ns = -1;  // core_round_trip_ns() just before the run
 };
 
 // The runs of SCENES.md, in its order; then boxes and spheres with sleeping off, which the
@@ -182,11 +184,11 @@ std::string asleep_text(const Run& run, const RunResult& r) {
 }
 
 void print_header() {
-  std::printf("%-14s %6s %-9s %-5s %-8s %8s %8s %8s %6s %9s %9s %9s %6s %5s %8s %9s\n", "scene", "bodies", "run", "sleep",
+  std::printf("%-14s %6s %-9s %-5s %-8s %8s %8s %8s %6s %9s %9s %9s %6s %5s %8s %9s %8s\n", "scene", "bodies", "run", "sleep",
               "engine", "median", "p90", "max", "ratio", "top drift", "any drift", "asleep at", "moving", "sunk",
-              "peak MiB", "sub-steps");
-  std::printf("%-14s %6s %-9s %-5s %-8s %8s %8s %8s %6s %9s %9s %9s %6s %5s %8s %9s\n", "", "", "", "", "", "ms/step",
-              "ms/step", "ms/step", "i/peer", "m", "m", "", ">5cm/s", "y<0", "", "a step");
+              "peak MiB", "sub-steps", "cores rt");
+  std::printf("%-14s %6s %-9s %-5s %-8s %8s %8s %8s %6s %9s %9s %9s %6s %5s %8s %9s %8s\n", "", "", "", "", "", "ms/step",
+              "ms/step", "ms/step", "i/peer", "m", "m", "", ">5cm/s", "y<0", "", "a step", "ns");
 }
 
 void print_row(const Run& run, EngineId engine, const Measured& m, std::optional<double> ratio) {
@@ -210,10 +212,10 @@ void print_row(const Run& run, EngineId engine, const Measured& m, std::optional
   if (ratio) std::snprintf(ratio_text, sizeof ratio_text, "%.2f", *ratio);
   char substeps_text[16] = "-";
   if (r.substeps > 0) std::snprintf(substeps_text, sizeof substeps_text, "%.1f", r.substeps);
-  std::printf("%-14s %6s %-9s %-5s %-8s %8.3f %8.3f %8.3f %6s %9s %9s %9s %6d %5d %8.1f %9s\n", scene.c_str(),
+  std::printf("%-14s %6s %-9s %-5s %-8s %8.3f %8.3f %8.3f %6s %9s %9s %9s %6d %5d %8.1f %9s %8.0f\n", scene.c_str(),
               bodies.c_str(), length.c_str(), sleep, engine_name(engine), r.median_ms, r.p90_ms, r.max_ms, ratio_text,
               metres(r.top_drift).c_str(), metres(r.any_drift).c_str(), asleep_text(run, r).c_str(), r.moving, r.sunk,
-              m.peak_mib, substeps_text);
+              m.peak_mib, substeps_text, m.round_trip_ns);
 }
 
 struct Outcome {
@@ -375,6 +377,9 @@ int main(int argc, char** argv) {
   std::printf("physics_bench%s: impulse vs Bullet and Box3D, scenes of ../shared/bench/SCENES.md\n", quick ? " --quick" : "");
   std::printf("date %s; %ld cores (nproc), CPU %s; load average %s at start\n", now_utc().c_str(), cores,
               first_line_of("/proc/cpuinfo", "model name").c_str(), load_average().c_str());
+  std::printf("cores rt: a cache line's round trip between the first two cores, just before each run (%.0f ns now;\n"
+              "  about 60 when the host keeps them together, 350 when apart: the threads' sharing gains far less then)\n",
+              core_round_trip_ns());
   std::string box3d = "Box3D absent (built without ../shared/peers/box3d)";
   if constexpr (kHaveBox3D) box3d = box3d_description();
   std::printf("%s;\n%s; %s; build %s, %s\n", impulse_description().c_str(), bullet_description().c_str(), box3d.c_str(),
@@ -399,6 +404,7 @@ int main(int argc, char** argv) {
       if (progress)
         std::fprintf(stderr, "\r[%zu/%zu] %s %s sleep %s: %s ...        ", k + 1, runs.size(), run.scene.c_str(),
                      run_length(run.steps).c_str(), run.sleep ? "on" : "off", engine_name(e));
+      const double round_trip_ns = core_round_trip_ns();
       Measured m = in_child([&](RunResult& r) {
         const Scene scene = make_scene(run.scene);
         if (e == EngineId::impulse) run_impulse(scene, run, r);
@@ -407,6 +413,7 @@ int main(int argc, char** argv) {
         else run_box3d(scene, run, r);
 #endif
       });
+      m.round_trip_ns = round_trip_ns;
       failed = failed || !m.result.ok;
       o.of(e) = m;
     }
@@ -420,6 +427,6 @@ int main(int argc, char** argv) {
               "moving: faster than 5 cm/s at the end; sunk: centre below the ground's top at the end; * not in SCENES.md\n");
   print_goals(outcomes);
   print_growth(outcomes);
-  std::printf("\nload average %s at the end\n", load_average().c_str());
+  std::printf("\nload average %s at the end; cores' round trip %.0f ns\n", load_average().c_str(), core_round_trip_ns());
   return failed ? 1 : 0;
 }

@@ -33,6 +33,7 @@
 
 #include "demos/film/render_scene.h"
 #include "demos/scene/scene_file.h"
+#include "tests/bench/core_latency.h"
 #include "tests/bench/render_phases.h"
 
 extern char** environ;
@@ -164,9 +165,10 @@ int main(int argc, char** argv) {
     const int frames = options.frames;
     std::printf("render_bench: %dx%d, %d frames per phase, 300 spheres + 100 boxes + 400 arrows + overlay\n",
                 settings.width, settings.height, frames);
-    std::printf("machine: %u cores; LP_NUM_THREADS=%s LP_NATIVE_VECTOR_WIDTH=%s; load average at start %s\n",
+    std::printf("machine: %u cores; LP_NUM_THREADS=%s LP_NATIVE_VECTOR_WIDTH=%s; load average at start %s;\n"
+                "  a cache line's round trip between the first two cores %.0f ns (about 60 together, 350 apart)\n",
                 std::thread::hardware_concurrency(), env_or("LP_NUM_THREADS", "(all cores)"),
-                env_or("LP_NATIVE_VECTOR_WIDTH", "(native)"), load_average().c_str());
+                env_or("LP_NATIVE_VECTOR_WIDTH", "(native)"), load_average().c_str(), bench::core_round_trip_ns());
     std::printf("\n| %-44s | %8s | %8s | %8s | %9s | %9s |\n", "phase", "frames/s", "ms/frame", "cpu ms", "error 16x",
                 "error 64x");
     std::printf("|%s|%s|%s|%s|%s|%s|\n", std::string(46, '-').c_str(), std::string(10, '-').c_str(),
@@ -222,7 +224,7 @@ int main(int argc, char** argv) {
       const double sixty = peak_memory_of_video(argv[0], 60, options.work);
       std::printf("peak memory, end to end: 10 s video %.0f MiB, 60 s video %.0f MiB\n", ten, sixty);
     }
-    std::printf("load average at end %s\n", load_average().c_str());
+    std::printf("load average at end %s; cores' round trip %.0f ns\n", load_average().c_str(), bench::core_round_trip_ns());
   } catch (const std::exception& error) {
     std::fprintf(stderr, "render_bench: %s\n", error.what());
     return 1;
