@@ -48,9 +48,9 @@ struct WorldSettings {
   Real joint_hertz = 60;           // stiffness of the joints' position correction
   Real joint_damping_ratio = 2;
   int threads = 0;                 // threads that share the step's work; 0: one per core, each step shared
-                                   // or not as has run faster lately (share_chooser.h). A sweep is shared
-                                   // by up to 8 (sweep_schedule.h). The results are the same, bit for bit,
-                                   // for any count.
+                                   // or not as has run faster lately (share_chooser.h). The contact search
+                                   // uses them all; a sweep, at most two (the world's one cut,
+                                   // sweep_schedule.h). The results are the same, bit for bit, for any count.
 };
 
 class World {
