@@ -10,8 +10,9 @@
 
 namespace impulse::bench {
 
-// Median of a few rounds of 100,000 round trips of one cache line between two threads pinned to
-// the first two CPUs this process may use, in nanoseconds; -1 with fewer than two.
+// Median of three rounds of up to 20,000 round trips of one cache line (30 ms at most each) between
+// two threads pinned to the first two CPUs this process may use, in nanoseconds; -1 with fewer
+// than two.
 double core_round_trip_ns();
 
 }  // namespace impulse::bench
