@@ -53,6 +53,15 @@ inline void apply_impulse(BodyState& sa, const Mat3& inv_inertia_a, BodyState& s
   add_velocity(sb, -(sb.inv_mass * impulse), -(inv_inertia_b * rb.cross(impulse)));
 }
 
+// dq' = 1/2 (0, w) dq, one explicit step, renormalised: exactly a turn about w by 2 atan(h |w| / 2),
+// the Cayley transform cay(h [w]x) of the rotation. The positions' step, and where a bounce finds a
+// turning body at the moment of contact.
+inline void turn(Quat& dq, const Vec3& w, Real h) {
+  const Quat spin(0, w.x() * h / 2, w.y() * h / 2, w.z() * h / 2);
+  dq.coeffs() += (spin * dq).coeffs();
+  dq.normalize();
+}
+
 // Velocity of A's point at ra relative to B's point at rb: v + w x r for each (eq. 11, corrected),
 // then v_ab = v_a - v_b (eq. 4).
 inline Vec3 relative_velocity(const BodyState& sa, const BodyState& sb, const Vec3& ra, const Vec3& rb) {

@@ -1,7 +1,7 @@
 // The default method's contacts as the solver builds them each step (contact_prepare.cpp): one
 // constraint per point, one per manifold (the points between one pair of bodies), its settings,
 // and the materials' mixing rules. These are what the records, the bounces and the warm start
-// read; the sweeps run on a packed copy (contact_lanes.h).
+// read; the sweeps run on a packed copy with the rows of eq. 13 (contact_lanes.h).
 #pragma once
 #include "physics/math.h"
 
@@ -37,10 +37,7 @@ struct alignas(64) ContactConstraint {  // a cache line of its own at each end: 
   Vec3 normal, tangent1, tangent2;
   Vec3 anchor_a, anchor_b;             // contact point relative to each centre, at step start
   Real adjusted_separation = 0;        // separation - dot(anchor_a - anchor_b, normal)
-  Real normal_mass = 0;                // 1 / eq. 13's denominator
-  // The normal row's angular parts, fixed for the step: r x n, and I^-1 (r x n) for each body.
-  Vec3 ra_cross_n = Vec3::Zero(), rb_cross_n = Vec3::Zero();
-  Vec3 angular_a = Vec3::Zero(), angular_b = Vec3::Zero();
+  Real normal_mass = 0;                // 1 / eq. 13's denominator, at the step's start
   Real friction = 0, restitution = 0;
   // The impulses. After prepare(): the warm start; during the sub-steps the packed lanes hold the
   // current ones (contact_lanes.h); after store_impulses(): the last sub-step's, and the sums over
@@ -61,11 +58,14 @@ struct alignas(64) ManifoldConstraint {
   // sub-steps, the last sub-step's and the step's totals after store_impulses().
   Real tangent_impulse1 = 0, tangent_impulse2 = 0, twist_impulse = 0;
   Real total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
-  Real bounce_shift = 0;               // m, separation to take back after this sub-step's positions
   Real bounce_speed = 0;               // m/s, the speed the pair parts at after its hit
-  // Whether each body's turning carries its contact points with it: not a sphere's (its surface
-  // meets the other body where it is, however fast it spins) nor a still body's.
+  // Each body's radius if it is a sphere, else 0; and whether its turning carries its contact
+  // points with it: not a sphere's (its surface meets the other body where it is, however fast it
+  // spins) nor a still body's.
+  Real radius_a = 0, radius_b = 0;
   bool turns_a = true, turns_b = true;
+  uint8_t hit_points = 0;              // bit i: point i bounced this step (contact_bounce.cpp)
+  bool move_pending = false;           // a bounce's motion to take back after this sub-step's positions
 };
 
 // A manifold's load at the end of a step, for StackSink: its last sub-step's impulse and the sum of

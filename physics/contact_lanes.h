@@ -35,4 +35,24 @@ struct alignas(64) ManifoldLanes {
   Real2 total_tangent_impulse1, total_tangent_impulse2;
 };
 
+// A manifold's geometry, from which set_rows() writes the rows one lane is solved with: at the
+// step's start (prepare()) or at the moment of contact (a bounce). The points' lever arms from
+// each centre, the friction rows' (at the points' centroid, or at a bounce's hits'), the bodies'
+// inverse masses and world inverse inertias.
+struct RowGeometry {
+  Vec3 normal, tangent1, tangent2;
+  int count = 0;
+  const Vec3* ra = nullptr;
+  const Vec3* rb = nullptr;
+  Vec3 centre_a, centre_b;
+  Real inv_mass_a = 0, inv_mass_b = 0;
+  const Mat3* inv_inertia_a = nullptr;
+  const Mat3* inv_inertia_b = nullptr;
+};
+// Each point's normal row (r x n, I^-1 (r x n), 1 / eq. 13's denominator), their coupling, and the
+// friction and twist rows, in lane l of `block` and its `points`.
+void set_rows(ManifoldLanes& block, PointLanes* points, int l, const RowGeometry& g);
+// The friction and twist rows alone.
+void set_friction_rows(ManifoldLanes& block, int l, const RowGeometry& g);
+
 }  // namespace impulse::physics

@@ -43,11 +43,6 @@ ContactConstraint make_constraint(const Contact& contact, const std::vector<Body
   c.anchor_a = contact.point - body_a.position;
   c.anchor_b = contact.point - body_b.position;
   c.adjusted_separation = contact.separation - (c.anchor_a - c.anchor_b).dot(c.normal);
-  c.ra_cross_n = c.anchor_a.cross(c.normal);
-  c.rb_cross_n = c.anchor_b.cross(c.normal);
-  c.angular_a = solver_bodies.inertia[c.a].inv_inertia * c.ra_cross_n;
-  c.angular_b = solver_bodies.inertia[c.b].inv_inertia * c.rb_cross_n;
-  c.normal_mass = safe_inverse(inverse_effective_mass_of_rows(sa.inv_mass + sb.inv_mass, c.ra_cross_n, c.angular_a, c.rb_cross_n, c.angular_b));
   if (first) {
     c.friction = first->friction;
     c.restitution = first->restitution;
@@ -94,6 +89,7 @@ void ContactSolver::plan(const std::vector<Contact>& contacts, const std::vector
 void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, const SolverBodies& solver_bodies,
                             const ContactSolverSettings& settings, const Vec3& gravity, Real h) {
   settings_ = settings;
+  gravity_ = gravity;
   impact_threshold_ = impact_threshold(settings.restitution_threshold, gravity);
   const Real hertz = std::min(settings.contact_hertz, kMaxHertzPerSubstepRate / h);
   // One stiffness for every contact. Box2D makes contacts with static bodies twice as stiff; so
@@ -143,6 +139,8 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
     place += schedule_.paired(place) ? 2 : 1;
   }
   lane_points_.resize(points);
+  impact_shift_.resize(contacts.size());  // written for the points that bounce (ManifoldConstraint::hit_points)
+  impact_moves_.resize(order.size());     // written for the manifolds that bounce (ManifoldConstraint::move_pending)
   find_previous_pairs();
   // Each thread builds the manifolds it sweeps, from the states and bodies it loaded.
   schedule_.run(*team_, [&](int thread) {
@@ -184,6 +182,50 @@ void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& cont
   fill_lanes(place, m);
 }
 
+void set_rows(ManifoldLanes& block, PointLanes* points, int l, const RowGeometry& g) {
+  const Mat3& inv_ia = *g.inv_inertia_a;
+  const Mat3& inv_ib = *g.inv_inertia_b;
+  const Real linear = g.inv_mass_a + g.inv_mass_b;
+  for (int i = 0; i < g.count; ++i) {
+    const Vec3 ra_cross_n = g.ra[i].cross(g.normal), rb_cross_n = g.rb[i].cross(g.normal);
+    const Vec3 angular_a = inv_ia * ra_cross_n, angular_b = inv_ib * rb_cross_n;
+    PointLanes& p = points[i];
+    set_lane(p.ra_cross_n, l, ra_cross_n);
+    set_lane(p.rb_cross_n, l, rb_cross_n);
+    set_lane(p.angular_a, l, angular_a);
+    set_lane(p.angular_b, l, angular_b);
+    p.normal_mass[l] = safe_inverse(inverse_effective_mass_of_rows(linear, ra_cross_n, angular_a, rb_cross_n, angular_b));
+  }
+  // How an impulse at point j changes the normal velocity at point i. Symmetric, and the points
+  // share the normal.
+  for (int i = 0; i < g.count; ++i)
+    for (int j = i; j < g.count; ++j)
+      block.coupling[i][j][l] = block.coupling[j][i][l] =
+          inverse_effective_mass_of_rows(linear * g.normal.dot(g.normal), lane(points[i].ra_cross_n, l), lane(points[j].angular_a, l),
+                                         lane(points[i].rb_cross_n, l), lane(points[j].angular_b, l));
+  set_friction_rows(block, l, g);
+}
+
+void set_friction_rows(ManifoldLanes& block, int l, const RowGeometry& g) {
+  const Mat3& inv_ia = *g.inv_inertia_a;
+  const Mat3& inv_ib = *g.inv_inertia_b;
+  block.tangent_mass1[l] = safe_inverse(inverse_effective_mass(g.inv_mass_a, inv_ia, g.inv_mass_b, inv_ib, g.centre_a, g.centre_b, g.tangent1));
+  block.tangent_mass2[l] = safe_inverse(inverse_effective_mass(g.inv_mass_a, inv_ia, g.inv_mass_b, inv_ib, g.centre_a, g.centre_b, g.tangent2));
+  block.twist_mass[l] = safe_inverse(g.normal.dot((inv_ia + inv_ib) * g.normal));
+  const Vec3 ra_cross_t1 = g.centre_a.cross(g.tangent1), ra_cross_t2 = g.centre_a.cross(g.tangent2);
+  const Vec3 rb_cross_t1 = g.centre_b.cross(g.tangent1), rb_cross_t2 = g.centre_b.cross(g.tangent2);
+  set_lane(block.ra_cross_t1, l, ra_cross_t1);
+  set_lane(block.ra_cross_t2, l, ra_cross_t2);
+  set_lane(block.rb_cross_t1, l, rb_cross_t1);
+  set_lane(block.rb_cross_t2, l, rb_cross_t2);
+  set_lane(block.turn_a1, l, inv_ia * ra_cross_t1);
+  set_lane(block.turn_a2, l, inv_ia * ra_cross_t2);
+  set_lane(block.turn_b1, l, inv_ib * rb_cross_t1);
+  set_lane(block.turn_b2, l, inv_ib * rb_cross_t2);
+  set_lane(block.twist_a, l, inv_ia * g.normal);
+  set_lane(block.twist_b, l, inv_ib * g.normal);
+}
+
 // For each of this step's manifolds (in the contacts' order), the range of last step's with the
 // same pair. Both lists come by pair, as the contacts do (ContactFinder): one merge, no search.
 void ContactSolver::find_previous_pairs() {
@@ -204,67 +246,90 @@ void ContactSolver::find_previous_pairs() {
 }
 
 // The shared parts of a manifold whose points are built, and the rows its lane `l` of `block` is
-// solved with: the points' coupling (eq. 13's denominator between points), and friction at their
-// centroid.
+// solved with: each point's at its anchors, their coupling, friction at their centroid.
 void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& block, int l, const Body& body_a, const Body& body_b,
-                                        const SolverBodies& solver_bodies) const {
+                                        const SolverBodies& solver_bodies) {
   const BodyState& sa = solver_bodies.states[m.a];
   const BodyState& sb = solver_bodies.states[m.b];
-  const Mat3& inv_ia = solver_bodies.inertia[m.a].inv_inertia;
-  const Mat3& inv_ib = solver_bodies.inertia[m.b].inv_inertia;
-  const ContactConstraint& first = constraints_[m.first];
+  ContactConstraint* points = &constraints_[m.first];
+  const ContactConstraint& first = points[0];
   m.normal = first.normal;
   m.tangent1 = first.tangent1;
   m.tangent2 = first.tangent2;
   m.friction = first.friction;
   m.restitution = first.restitution;
   block.can_bounce = block.can_bounce || m.restitution > 0;
-  Vec3 centre = Vec3::Zero();
-  for (int i = 0; i < m.count; ++i) centre += constraints_[m.first + i].anchor_a;
+  Vec3 centre = Vec3::Zero(), ra[kMaxManifoldPoints], rb[kMaxManifoldPoints];
+  for (int i = 0; i < m.count; ++i) {
+    ra[i] = points[i].anchor_a;
+    rb[i] = points[i].anchor_b;
+    centre += points[i].anchor_a;
+  }
   centre /= m.count;  // relative to A
-  const Vec3 centre_a = centre, centre_b = centre + (first.anchor_b - first.anchor_a);
-  block.tangent_mass1[l] = safe_inverse(inverse_effective_mass(sa.inv_mass, inv_ia, sb.inv_mass, inv_ib, centre_a, centre_b, first.tangent1));
-  block.tangent_mass2[l] = safe_inverse(inverse_effective_mass(sa.inv_mass, inv_ia, sb.inv_mass, inv_ib, centre_a, centre_b, first.tangent2));
-  // How an impulse at point j changes the normal velocity at point i. Symmetric, and the points
-  // share the normal.
-  for (int i = 0; i < m.count; ++i)
-    for (int j = i; j < m.count; ++j) {
-      const ContactConstraint& ci = constraints_[m.first + i];
-      const ContactConstraint& cj = constraints_[m.first + j];
-      block.coupling[i][j][l] = block.coupling[j][i][l] = inverse_effective_mass_of_rows(
-          (sa.inv_mass + sb.inv_mass) * first.normal.dot(first.normal), ci.ra_cross_n, cj.angular_a, ci.rb_cross_n, cj.angular_b);
-    }
-  block.twist_mass[l] = safe_inverse(first.normal.dot((inv_ia + inv_ib) * first.normal));
-  const Vec3 ra_cross_t1 = centre_a.cross(first.tangent1), ra_cross_t2 = centre_a.cross(first.tangent2);
-  const Vec3 rb_cross_t1 = centre_b.cross(first.tangent1), rb_cross_t2 = centre_b.cross(first.tangent2);
-  set_lane(block.ra_cross_t1, l, ra_cross_t1);
-  set_lane(block.ra_cross_t2, l, ra_cross_t2);
-  set_lane(block.rb_cross_t1, l, rb_cross_t1);
-  set_lane(block.rb_cross_t2, l, rb_cross_t2);
-  set_lane(block.turn_a1, l, inv_ia * ra_cross_t1);
-  set_lane(block.turn_a2, l, inv_ia * ra_cross_t2);
-  set_lane(block.turn_b1, l, inv_ib * rb_cross_t1);
-  set_lane(block.turn_b2, l, inv_ib * rb_cross_t2);
-  set_lane(block.twist_a, l, inv_ia * first.normal);
-  set_lane(block.twist_b, l, inv_ib * first.normal);
+  PointLanes* lanes = &lane_points_[block.first_point];
+  set_rows(block, lanes, l,
+           {m.normal, m.tangent1, m.tangent2, m.count, ra, rb, centre, centre + (first.anchor_b - first.anchor_a), sa.inv_mass, sb.inv_mass,
+            &solver_bodies.inertia[m.a].inv_inertia, &solver_bodies.inertia[m.b].inv_inertia});
+  for (int i = 0; i < m.count; ++i) points[i].normal_mass = lanes[i].normal_mass[l];
   Real twist_radius = 0;
-  for (int i = 0; i < m.count; ++i) twist_radius += (constraints_[m.first + i].anchor_a - centre).norm() / m.count;
+  for (int i = 0; i < m.count; ++i) twist_radius += (points[i].anchor_a - centre).norm() / m.count;
+  m.radius_a = body_a.shape.type == ShapeType::sphere ? body_a.shape.radius : 0;
+  m.radius_b = body_b.shape.type == ShapeType::sphere ? body_b.shape.radius : 0;
   // One point of a sphere: the soft contact presses a disc of radius a = sqrt(2 R d) at depth d
   // (R = 1 / (1/R_a + 1/R_b), a flat face's 1/R being 0), over which friction resists a twist up
   // to 2/3 mu N a (uniform pressure). Without it a sphere spinning about the normal spins for ever.
   if (m.count == 1) {
-    auto curvature = [](const Body& body) { return body.shape.type == ShapeType::sphere ? 1 / body.shape.radius : Real(0); };
-    const Real k = curvature(body_a) + curvature(body_b);
+    const Real k = (m.radius_a > 0 ? 1 / m.radius_a : 0) + (m.radius_b > 0 ? 1 / m.radius_b : 0);
     const Real depth = std::max(-(first.adjusted_separation + (first.anchor_a - first.anchor_b).dot(first.normal)), Real(0));
     if (k > 0) twist_radius = Real(2) / 3 * std::sqrt(2 * depth / k);
     if (k > 0) block.rolling_radius[l] = settings_.rolling_resistance / k;
   }
   block.twist_radius[l] = twist_radius;
   // A sphere's surface stays where it is as it turns, and a still body does not turn.
-  m.turns_a = sa.inv_mass > 0 && body_a.shape.type != ShapeType::sphere;
-  m.turns_b = sb.inv_mass > 0 && body_b.shape.type != ShapeType::sphere;
+  m.turns_a = sa.inv_mass > 0 && m.radius_a == 0;
+  m.turns_b = sb.inv_mass > 0 && m.radius_b == 0;
   block.turns_a[l] = m.turns_a;
   block.turns_b[l] = m.turns_b;
+}
+
+// The block of a place's manifold, its lane given the manifold's bodies (and emptied first, with
+// its second lane left still, by the block's first manifold).
+ManifoldLanes& ContactSolver::begin_lanes(int place, const ManifoldConstraint& m) {
+  const auto [index, l] = lane_of_place_[place];
+  ManifoldLanes& block = lanes_[index];
+  if (l == 0) {
+    const int first_point = block.first_point;
+    block = ManifoldLanes{};
+    block.points = m.count;
+    block.first_point = first_point;
+    block.a[1] = block.b[1] = world_slot_;
+    for (int i = 0; i < m.count; ++i) lane_points_[first_point + i] = PointLanes{};
+  }
+  block.a[l] = m.a;
+  block.b[l] = m.b;
+  return block;
+}
+
+// The rest of a prepared manifold's lane (prepare_shared_rows() wrote its rows): the shared normal
+// and tangents, the warm start, and the points' anchors and impulses.
+void ContactSolver::fill_lanes(int place, const ManifoldConstraint& m) {
+  const auto [index, l] = lane_of_place_[place];
+  ManifoldLanes& block = lanes_[index];
+  set_lane(block.normal, l, m.normal);
+  set_lane(block.tangent1, l, m.tangent1);
+  set_lane(block.tangent2, l, m.tangent2);
+  block.friction[l] = m.friction;
+  block.tangent_impulse1[l] = m.tangent_impulse1;
+  block.tangent_impulse2[l] = m.tangent_impulse2;
+  block.twist_impulse[l] = m.twist_impulse;
+  for (int i = 0; i < m.count; ++i) {
+    const ContactConstraint& c = constraints_[m.first + i];
+    PointLanes& p = lane_points_[block.first_point + i];
+    set_lane(p.anchor_a, l, c.anchor_a);
+    set_lane(p.anchor_b, l, c.anchor_b);
+    p.adjusted_separation[l] = c.adjusted_separation;
+    p.normal_impulse[l] = c.normal_impulse;
+  }
 }
 
 // Last step's friction impulses, on this step's tangents.
@@ -272,35 +337,6 @@ void ContactSolver::warm_start_friction(ManifoldConstraint& m, const ManifoldWar
   m.tangent_impulse1 = previous.friction_impulse.dot(m.tangent1);
   m.tangent_impulse2 = previous.friction_impulse.dot(m.tangent2);
   m.twist_impulse = previous.twist_impulse;
-}
-
-void ContactSolver::store_impulses() {
-  impulses_stored_ = true;
-  stored_h_ = h_;
-  loads_.resize(manifolds_.size());
-  warm_manifolds_.resize(manifolds_.size());
-  warm_points_.resize(constraints_.size());
-  schedule_.for_each_place(*team_, [&](int place) {
-    copy_back(place);
-    const ManifoldConstraint& m = manifolds_[place];
-    warm_manifolds_[place] = {m.first, m.count, m.tangent_impulse1 * m.tangent1 + m.tangent_impulse2 * m.tangent2, m.twist_impulse};
-    for (int i = 0; i < m.count; ++i) warm_points_[m.first + i] = {constraints_[m.first + i].feature, constraints_[m.first + i].normal_impulse};
-    ManifoldLoad& load = loads_[place];
-    load = {m.a, m.b, 0, 0, constraints_[m.first].normal};
-    for (int i = 0; i < m.count; ++i) {
-      load.impulse += constraints_[m.first + i].normal_impulse;
-      load.normal_mass += constraints_[m.first + i].normal_mass;
-    }
-    // For the records: each point's share of the friction, by its share of the normal impulse.
-    Real normal_sum = 0;
-    for (int i = 0; i < m.count; ++i) normal_sum += constraints_[m.first + i].total_normal_impulse;
-    for (int i = 0; i < m.count; ++i) {
-      ContactConstraint& c = constraints_[m.first + i];
-      const Real share = normal_sum > 0 ? c.total_normal_impulse / normal_sum : Real(1) / m.count;
-      c.total_tangent_impulse1 = share * m.total_tangent_impulse1;
-      c.total_tangent_impulse2 = share * m.total_tangent_impulse2;
-    }
-  });
 }
 
 }  // namespace impulse::physics

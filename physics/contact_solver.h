@@ -1,13 +1,19 @@
 // The default method's contacts, solved by sequential impulses: per point, accumulated normal
 // impulses clamped to push only (eq. 13 as corrected, normal_impulse.h) with a soft position
 // correction; per manifold (all the points between one pair of bodies), Coulomb friction on two
-// tangents and a twist at the points' centroid (friction.h), and restitution answered in the
-// sub-step in which the surfaces meet (restitution.h).
+// tangents and a twist at the points' centroid (friction.h), and restitution answered at the
+// moment the surfaces meet (restitution.h).
 //
 // Each step: plan() orders the manifolds for the sweeps (sweep_schedule.h), prepare() builds
 // their constraints (contact_constraint.h), warm started from the last step, and packs them two
 // side by side for the sweeps (contact_lanes.h); the sub-steps' stages (soft_step.h) then run the
-// sweeps below; store_impulses() keeps the impulses for the records and the next warm start.
+// sweeps below; store_impulses() keeps the impulses for the records and the next warm start. The
+// stages, a file each (Box3D's b3PrepareContacts ... b3StoreImpulses):
+//   contact_prepare.cpp     plan(), prepare(): constraints, rows, warm start, lanes
+//   contact_warm_start.cpp  warm_start_manifolds()
+//   contact_solve.cpp       solve_manifolds(): the biased solve, and the relax solve (no bias)
+//   contact_bounce.cpp      the bounces, in the biased solve and the impact passes
+//   contact_store.cpp       add_to_totals(), store_impulses()
 //
 // Where the impulses are: during the sub-steps, in the packed lanes (the sweeps and the bounces
 // add to them); after store_impulses(), copied back into the constraints and the warm-start
@@ -19,6 +25,7 @@
 #include "physics/contact_constraint.h"
 #include "physics/contact_lanes.h"
 #include "physics/materials.h"
+#include "physics/restitution.h"
 #include "physics/softness.h"
 #include "physics/sweep_schedule.h"
 #include "physics/thread_team.h"
@@ -27,6 +34,8 @@
 #include <vector>
 
 namespace impulse::physics {
+
+class JointSolver;
 
 class ContactSolver {
  public:
@@ -44,6 +53,10 @@ class ContactSolver {
   void prepare(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, const SolverBodies& solver_bodies,
                const ContactSolverSettings& settings, const Vec3& gravity, Real h);
 
+  // The joints held through the bounces of this step's sub-steps (null: none). With joints, the
+  // world plans the contacts for one thread: a bounce then solves joints beyond its two bodies.
+  void hold_joints(JointSolver* joints) { joints_ = joints; }
+
   // The sweeps' work on the manifold at `place`, or on it and the next side by side (width 2),
   // for the stages of a sub-step (soft_step.h), in the sweeps' order.
   void warm_start_manifolds(int place, std::vector<BodyState>& states) const;
@@ -51,7 +64,11 @@ class ContactSolver {
   bool solve_manifolds(int place, int width, SolverBodies& solver_bodies, Real inv_h, bool use_bias);
   // The bounces alone, for the impact passes after the biased solve (soft_step.h): whether one bounced.
   bool bounce_manifolds(int place, int width, SolverBodies& solver_bodies, Real h);
-  void take_back_bounce_shifts(int place, int width, std::vector<BodyState>& states);  // after the positions
+  // After the positions of a sub-step in which something bounced: the bounced pairs' motion, and
+  // that of the bodies on their joints (on one thread, after the sweep), taken back to the moment of
+  // contact (restitution.h, take_back_motion).
+  void take_back_motions(int place, int width, std::vector<BodyState>& states);
+  void take_back_joint_motions(std::vector<BodyState>& states);
   void add_to_totals(int place);  // the sub-step's impulses to the step's totals, after the relax pass
   void end_substep() { backwards_ = !backwards_; }  // the next sub-step goes through the points the other way
 
@@ -64,6 +81,13 @@ class ContactSolver {
   const std::vector<ContactConstraint>& constraints() const { return constraints_; }
   const std::vector<ManifoldConstraint>& manifolds() const { return manifolds_; }
   const ContactConstraint& constraint_of(int contact) const { return constraints_[constraint_of_contact_[contact]]; }
+  // Where the contact's impulses acted this step, relative to the point the narrow phase found at
+  // its start: where the surfaces met, for a point that bounced; else nothing.
+  Vec3 impact_shift(int contact) const {
+    const int i = constraint_of_contact_[contact];
+    const ManifoldConstraint& m = manifolds_[manifold_of_constraint(i)];
+    return m.hit_points >> (i - m.first) & 1 ? impact_shift_[i] : Vec3::Zero();
+  }
   // f(contact) for every contact, in the sweeps' order (after plan()).
   template <class F>
   void for_each_contact_in_sweep_order(F&& f) const {
@@ -83,9 +107,11 @@ class ContactSolver {
   void prepare_manifold(int place, const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                         const SolverBodies& solver_bodies, const Vec3& gravity, Real warm_scale);
   void prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& block, int lane, const Body& body_a, const Body& body_b,
-                           const SolverBodies& solver_bodies) const;
+                           const SolverBodies& solver_bodies);
   static void warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous);
-  bool bounce_lane(int place, int lane_in_call, SolverBodies& solver_bodies, Real h);
+  bool bounce_lane(int place, SolverBodies& solver_bodies, Real h);
+  void write_impact_rows(int place, const ImpactGeometry& g, const bool* hit, const Real* separation, const SolverBodies& solver_bodies);
+  int manifold_of_constraint(int constraint) const;
   ManifoldLanes& begin_lanes(int place, const ManifoldConstraint& m);
   void fill_lanes(int place, const ManifoldConstraint& m);
   void copy_back(int place);
@@ -130,6 +156,25 @@ class ContactSolver {
   Real h_ = 0, stored_h_ = 0;      // this step's sub-step, and the stored impulses'
   ContactSolverSettings settings_;
   Real impact_threshold_ = 0;  // m/s: slower hits do not bounce (restitution.h, impact_threshold)
+  Vec3 gravity_ = Vec3::Zero();
+  JointSolver* joints_ = nullptr;     // hold_joints()
+  std::vector<Vec3> impact_shift_;    // per constraint, for the points that bounced (impact_shift())
+  std::vector<int> impact_bodies_;    // a bounce's: the slots it moves, and their states before it
+  std::vector<BodyState> impact_before_;
+  // A bounce's change of a body's motion, to take back after the positions: by `dp` and `turn`
+  // (its change of velocity dv, dw times the time before the moment of contact), while its velocity
+  // is still about v, w.
+  struct BodyMove {
+    Vec3 dp = Vec3::Zero(), turn = Vec3::Zero(), v = Vec3::Zero(), w = Vec3::Zero(), dv = Vec3::Zero(), dw = Vec3::Zero();
+    void add(const BodyMove& later);  // a second bounce in the same sub-step
+    void take_back(BodyState& s) const;
+  };
+  struct ImpactMove {
+    BodyMove a, b;
+  };
+  std::vector<ImpactMove> impact_moves_;  // per place, while ManifoldConstraint::move_pending
+  using JointMove = std::pair<int, BodyMove>;  // a slot, and its move
+  std::vector<JointMove> joint_moves_;    // the bodies on a bounced pair's joints
   Softness softness_;  // every contact's, for this step's sub-steps (prepare())
   bool backwards_ = false;  // this sub-step's order of a manifold's points (solve_lanes)
   ThreadTeam* team_ = nullptr;

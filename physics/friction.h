@@ -2,7 +2,8 @@
 // on two tangents at the centroid of a pair's points, within the disc of radius mu times their
 // total normal impulse; a twist about the normal within mu j_n times the points' spread; and, for
 // a sphere's one point, rolling resistance. The default method's rows run two pairs side by side
-// (lanes.h); bounces and rolling resistance clamp one pair with the same function.
+// (lanes.h); an impact solves one pair's rows exactly, and rolling resistance clamps one pair with
+// the same function.
 #pragma once
 #include "physics/body_state.h"
 #include "physics/contact_lanes.h"
@@ -60,6 +61,17 @@ template <bool UseBias>
   vb = vb - inv_mass_b * linear_friction;
   wb = wb - (applied1 * block.turn_b1 + applied2 * block.turn_b2 + applied_twist * block.twist_b);
 }
+
+// Friction at an impact (contact_bounce.cpp), on lane 0 of the block of a manifold that bounced:
+// its rows solved exactly by Coulomb's law with maximum dissipation. Of the friction impulses j
+// within the disc |j| <= mu J (J: the bounce's normal impulse), the one that leaves the bodies the
+// least kinetic energy: the impulse that stops the sliding where the surfaces meet when Coulomb
+// allows it (sticking), else one on the disc's rim (sliding through the impact); for a sphere, mu J
+// against the sliding, as Routh's analysis of the impact gives. Applied to the states, apart from
+// the rows' accumulated impulses (the soft contact's, which the next sub-step warm starts).
+// `impulse`, on the two tangents: the impact's so far (0 at first; again after the joints held
+// have moved the bodies), changed to the new one.
+void impact_friction(const ManifoldLanes& block, Real bounce, Eigen::Matrix<Real, 2, 1>& impulse, BodyState& sa, BodyState& sb);
 
 // Rolling resistance, in the relax pass, for a sphere's one point (the lanes `solved` whose
 // rolling_radius is set): an angular impulse about the tangents against the bodies' relative

@@ -28,6 +28,13 @@ struct JointDef {
   bool rope = false;              // distance: may go slack
 };
 
+// A joint's accumulated impulses.
+struct JointImpulse {
+  Vec3 linear = Vec3::Zero();  // ball, hinge: on B (A gets the opposite)
+  Real angular[2] = {0, 0};    // hinge: about the two directions across the axis
+  Real axial = 0;              // distance: along A->B, on B
+};
+
 struct Joint {
   std::string name;
   JointType type = JointType::ball;
@@ -36,10 +43,7 @@ struct Joint {
   Vec3 local_axis_a = Vec3::UnitZ(), local_axis_b = Vec3::UnitZ();    // hinge
   Real length = 0;
   bool rope = false;
-  // Accumulated impulses, warm started from step to step.
-  Vec3 linear_impulse = Vec3::Zero();   // ball, hinge: on B (A gets the opposite)
-  Real angular_impulse[2] = {0, 0};     // hinge: about the two directions across the axis
-  Real axial_impulse = 0;               // distance: along A->B, on B
+  JointImpulse impulse;  // accumulated, warm started from step to step
 };
 
 }  // namespace impulse::physics

@@ -22,6 +22,16 @@ class JointSolver {
   void warm_start(SolverBodies& bodies) const;
   void solve(SolverBodies& bodies, Real inv_h, bool use_bias);  // accumulates into the joints
 
+  // Joints held through an impact (contact_bounce.cpp): whether a body's slot hangs on a joint;
+  // then, for an impact between two slots, the joints linked to either through joints, each pass
+  // of hold() solving their rows rigidly (no softness, no position bias) to zero relative velocity,
+  // with impulses of the impact's own: the warm start's are left as they are. hold() returns the
+  // largest change of an impulse in the pass (N s), for the caller to iterate until it is small.
+  bool jointed(int slot) const { return slot < int(cluster_of_slot_.size()) && cluster_of_slot_[slot] >= 0; }
+  void begin_impact(int slot_a, int slot_b);
+  const std::vector<int>& impact_slots() const { return impact_slots_; }  // the bodies of those joints
+  Real hold(SolverBodies& bodies, Real inv_h);
+
  private:
   struct Prepared {
     Joint* joint;
@@ -30,9 +40,20 @@ class JointSolver {
     Vec3 delta_centre;         // centre B - centre A, at step start
     Vec3 axis_a, axis_b;       // hinge axes in world space, at step start
     Real length = 0;
+    int cluster = -1;          // the joints linked through shared bodies share one
   };
+  // How a pass solves a joint's rows: with the soft step's softness, or rigidly (scale 1, no bias).
+  struct Rows {
+    Real bias_rate = 0, mass_scale = 1, impulse_scale = 0;
+  };
+  static Real solve_joint(const Prepared& p, SolverBodies& bodies, Real inv_h, const Rows& rows, JointImpulse& impulse);
+
   std::vector<Prepared> prepared_;
   Softness softness_;
+  std::vector<int> cluster_of_slot_;  // -1: on no joint
+  std::vector<int> impact_joints_;    // begin_impact()'s
+  std::vector<int> impact_slots_;
+  std::vector<JointImpulse> impact_impulses_;
 };
 
 }  // namespace impulse::physics

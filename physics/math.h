@@ -11,6 +11,7 @@ using Vec3 = Eigen::Matrix<Real, 3, 1>;
 using Mat3 = Eigen::Matrix<Real, 3, 3>;
 using Quat = Eigen::Quaternion<Real>;
 
+inline Real dot(const Vec3& a, const Vec3& b) { return a.dot(b); }  // as lanes.h's, for code written once for both
 inline bool is_finite(const Vec3& v) { return v.allFinite(); }
 inline bool is_finite(const Quat& q) { return q.coeffs().allFinite(); }
 

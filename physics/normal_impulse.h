@@ -39,13 +39,24 @@ inline Real inverse_effective_mass_of_rows(Real linear, const Vec3& ra_cross_n_i
 // The effective mass itself, 0 where nothing can move.
 inline Real safe_inverse(Real k) { return k > 0 ? 1 / k : 0; }
 
-// A point's separation now, from how far each body has moved and turned since the step began:
-// its step-start separation along n, adjusted by the anchors (adjusted_separation = separation -
-// (r_a - r_b) . n), plus the motion of the two anchors along n.
-inline Real separation_now(const Vec3& normal, const Vec3& ra, const Vec3& rb, Real adjusted_separation, const BodyState& sa,
-                           const BodyState& sb) {
-  const Vec3 moved = (sa.dp - sb.dp) + (rotate(sa.dq, ra) - rotate(sb.dq, rb));
-  return moved.dot(normal) + adjusted_separation;
+// A point's separation now, from how far each body has moved and turned since the step began: its
+// step-start separation along n (adjusted_separation = separation - (r_a - r_b) . n) plus the
+// motion of its two anchors along n. n . (dq r) = (dq^-1 n) . r, so `normal_in_a` is n turned back
+// by A's turn since the step began (n itself where turning does not move the point: a sphere's
+// surface, a still body), and `moved_along_normal` is (dp_a - dp_b) . n. One pair (Real, Vec3), or
+// two side by side (Real2, V3).
+template <class R, class V>
+[[gnu::always_inline]] inline R separation_now(R moved_along_normal, const V& normal_in_a, const V& normal_in_b, const V& anchor_a,
+                                               const V& anchor_b, R adjusted_separation) {
+  return moved_along_normal + dot(normal_in_a, anchor_a) - dot(normal_in_b, anchor_b) + adjusted_separation;
+}
+
+// The same for one point of two bodies' states; `turns_a`: whether A's turning carries the point.
+inline Real separation_now(const Vec3& normal, const Vec3& anchor_a, const Vec3& anchor_b, Real adjusted_separation, const BodyState& sa,
+                           bool turns_a, const BodyState& sb, bool turns_b) {
+  const Vec3 normal_in_a = turns_a ? rotate(sa.dq.conjugate(), normal) : normal;
+  const Vec3 normal_in_b = turns_b ? rotate(sb.dq.conjugate(), normal) : normal;
+  return separation_now((sa.dp - sb.dp).dot(normal), normal_in_a, normal_in_b, anchor_a, anchor_b, adjusted_separation);
 }
 
 // The default method's normal row for one point, two pairs side by side (lanes.h): the new

@@ -1,10 +1,8 @@
-// Restitution (eq. 5, v_n+ = -e v_n-, and eq. 8's 1 + e), answered where the surfaces meet: in the
-// sub-step in which a pair closes faster than the restitution threshold, its points are bounced
-// together to e times the speed at which they meet, predicted exactly under constant
-// acceleration, and the pair is moved back by the time it spent parting too early. One pair at a
-// time, in the contacts' order: so a hit passes along a row of touching bodies as in Newton's
-// cradle, instead of being shared out inelastically first. Slower hits (resting contact) are left
-// to the sweeps.
+// The moment of impact (eq. 5, v_n+ = -e v_n-, with eq. 8 and 13's 1 + e), its kernels on plain
+// data: when a point meets within a sub-step and how fast, where each body's surface is at that
+// moment (the lever arms r_a, r_b of eq. 13), and the motion that then starts at that moment. ContactSolver's bounce stage (contact_bounce.cpp) runs them on a manifold
+// and applies the impulses: the normal ones to e times the speed at which the surfaces meet, then
+// the contact's own friction rows within mu times them (listing 1's order), with the joints held.
 #pragma once
 #include "physics/body_state.h"
 #include "physics/contact_constraint.h"
@@ -26,25 +24,55 @@ inline Real impact_threshold(Real restitution_threshold, const Vec3& gravity) {
   return restitution_threshold * std::max(kImpactFloor, gravity.norm() / kThresholdGravity);
 }
 
-// What a bounce applied, for the step's totals: the normal impulse at each point that hit, and
-// friction's on the manifold's tangents.
-struct BounceImpulses {
-  bool hit[kMaxManifoldPoints] = {};
-  Real normal[kMaxManifoldPoints] = {};
-  bool friction = false;
-  Real tangent1 = 0, tangent2 = 0;
+// How a point meets within a sub-step of h, timed exactly under the constant relative acceleration
+// `a` along the normal (gravity's): the surfaces, `gap` apart at the start, meet after `tau` at
+// `touch` and part at u = -e touch (eq. 5). Semi-implicit Euler's velocity lags its position by
+// half a sub-step (its state (x, v) is the exact state (x, v + a h/2)), so the velocity to aim for
+// at the end of the sub-step is u + a (h/2 - tau).
+struct Hit {
+  Real gap = 0;     // m apart at the sub-step's start (0 when they overlap)
+  Real tau = 0;     // s into the sub-step when they meet
+  Real touch = 0;   // m/s, the normal velocity at which they meet (< 0)
+  Real u = 0;       // m/s, the parting speed
+  Real target = 0;  // m/s, the normal velocity at the end of the sub-step
 };
 
-// Bounces manifold `m` (its points `points[0..m.count)`) if it meets fast enough within this
-// sub-step of h; returns whether it did. It reads the constraints' geometry (fixed for the step)
-// and the bodies' states, changes the states, and returns what it applied for the caller to add
-// to the step's totals (in the lanes, where the sub-steps keep them). Then m.bounce_shift says
-// what to take back after the positions (take_back_bounce_shift).
-bool bounce(ManifoldConstraint& m, const ContactConstraint* points, BodyState& sa, const BodyInertia& ia, BodyState& sb,
-            const BodyInertia& ib, Real restitution_threshold, Real h, BounceImpulses& applied);
+// Whether a point `separation` apart now, at normal velocity `vn` (this sub-step's gravity
+// included), meets within the sub-step closing faster than `threshold`; if so, `hit` says how.
+bool meets(Real separation, Real vn, Real a, Real restitution, Real threshold, Real h, Hit& hit);
 
-// The shift is taken back as a time shift of the pair: each body moves along its own velocity for
-// the same dt. That changes neither momentum nor angular momentum (sum of v dt x m v = 0).
-void take_back_bounce_shift(ManifoldConstraint& m, BodyState& sa, BodyState& sb);
+// A pair at the moment its surfaces meet: the normal, and for each point the lever arms from each
+// body's centre to the point where the surfaces meet (eq. 13's r_a and r_b, r_a - r_b = x_b - x_a:
+// one world point, so that the impulses keep angular momentum), and each body's world inverse
+// inertia then. Where the point lives (physics/README.md, "Where the contact point lives"):
+// - a sphere's point is on its surface towards the other body, -R n from its centre, however it
+//   spins; two spheres meet on the line of their centres at that moment, which is the normal;
+// - else the point is carried by the body whose feature it is: a box's corner against a plane or
+//   a still body, an incident corner against a reference face; a point that both make (crossing
+//   edges, an incident edge cut by a side plane) lies midway between the two surfaces' points.
+// A body's point turns with it from the start of the step (its anchor, contact_constraint.h).
+struct ImpactGeometry {
+  Vec3 normal = Vec3::UnitY();
+  int count = 0;
+  Vec3 ra[kMaxManifoldPoints], rb[kMaxManifoldPoints];
+  Mat3 inv_inertia_a = Mat3::Zero(), inv_inertia_b = Mat3::Zero();
+  Vec3 moved_a = Vec3::Zero();  // A's centre's displacement since the step began
+};
+
+// The geometry of manifold `m` (points[0..m.count)) `tau` into the sub-step whose start the
+// states hold.
+ImpactGeometry impact_geometry(const ManifoldConstraint& m, const ContactConstraint* points, const BodyState& sa, const BodyInertia& ia,
+                               const BodyState& sb, const BodyInertia& ib, Real tau);
+
+// A point's separation at the sub-step's start: separation_now(), the solver rows', but for two
+// spheres, whose gap is measured on their line of centres as impact_geometry() takes the normal.
+Real impact_separation(const ManifoldConstraint& m, const ContactConstraint& c, const BodyState& sa, const BodyState& sb);
+
+// A body's motion over a sub-step, taken again as though its velocity had changed by (dv, dw) at
+// `tau` rather than at the start: `dp` = dv tau is taken off its displacement, and it is turned back
+// by `turn` = dw tau. So a bounced pair moves as the exact motion does, meeting at `tau` and parting
+// from there, and angular momentum about any point is kept (the impulse acted at the bodies'
+// positions at `tau`).
+void take_back_motion(BodyState& s, const Vec3& dp, const Vec3& turn);
 
 }  // namespace impulse::physics

@@ -4,9 +4,11 @@
 //
 //   1. integrate velocities (gravity)
 //   2. warm start: last sub-step's impulses applied again
-//   3. solve with the soft position bias; a contact that meets fast enough bounces (restitution.h)
+//   3. solve with the soft position bias; a contact that meets fast enough bounces at the moment
+//      of contact (contact_bounce.cpp), with the joints on its bodies held; then the impact passes
 //   4. integrate positions
-//   5. take back the bounces' shifts (only in a sub-step in which something bounced)
+//   5. take the bounced bodies' motion back to the moment of contact (only in a sub-step in which
+//      something bounced)
 //   6. relax: solve again without the bias, then add the sub-step's impulses to the step's totals
 //
 // The whole sub-step is one job of the thread team: its threads meet at a barrier between the
@@ -54,6 +56,7 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
   // One epoch per sweep, increasing in the order the sweeps run: a place waits for another
   // thread's counter to reach its sweep's epoch, so a sweep numbered below one already run would
   // not wait at all (warm start, solve, the impact passes, take back, relax).
+  contacts.hold_joints(joints);
   const uint64_t epoch = schedule.new_epochs(4 + kImpactPasses);
   const uint64_t first_pass = epoch + 2, take_back = first_pass + kImpactPasses, relax = take_back + 1;
   const bool parallel = schedule.parallel();
@@ -102,11 +105,12 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
     }
     schedule.slot_share(thread, integrate_position);
     meet();
-    // Most sub-steps nothing bounces (resting piles): then no sweep to take shifts back. The
+    // Most sub-steps nothing bounces (resting piles): then no sweep to take motion back. The
     // barriers order the flags; every thread reads the same and takes the same way.
     if (any_bounced) {
-      schedule.sweep_share(thread, take_back, [&](int place, int width) { contacts.take_back_bounce_shifts(place, width, bodies.states); });
+      schedule.sweep_share(thread, take_back, [&](int place, int width) { contacts.take_back_motions(place, width, bodies.states); });
       meet();
+      joint_stage(thread, [&] { contacts.take_back_joint_motions(bodies.states); });
     }
     joint_stage(thread, [&] { joints->solve(bodies, 1 / h, false); });
     schedule.sweep_share(thread, relax, [&](int place, int width) {

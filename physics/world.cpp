@@ -43,7 +43,9 @@ void World::step() {
   const int threads = share_chooser_.next_step_shares() ? team_->size() : 1;
 
   find_contacts(threads);
-  contact_solver_.plan(contacts_, bodies_, settings_.pair_materials, *team_, threads);
+  // A bounce holds the joints of its bodies (contact_bounce.cpp), which reach beyond its two
+  // bodies: with joints, one thread sweeps the contacts (the bits are the same for any count).
+  contact_solver_.plan(contacts_, bodies_, settings_.pair_materials, *team_, joints_.empty() ? threads : 1);
   load_states();
   if (settings_.method == ResponseMethod::impulse)
     contact_solver_.prepare(contacts_, bodies_, solver_bodies_, settings_.contact, settings_.gravity, h);
@@ -183,14 +185,6 @@ bool midpoint_rotation(const Vec3& inertia, const Vec3& w0, Real h, Vec3& wm, Ve
   return false;
 }
 
-// dq' = 1/2 (0, w) dq, one explicit step, renormalised: exactly a turn about w by 2 atan(h |w| / 2),
-// the Cayley transform cay(h [w]x) of the rotation.
-void turn(Quat& dq, const Vec3& w, Real h) {
-  const Quat spin(0, w.x() * h / 2, w.y() * h / 2, w.z() * h / 2);
-  dq.coeffs() += (spin * dq).coeffs();
-  dq.normalize();
-}
-
 // Torque-free rotation over h: the body turns by cay(h wm) (world frame) while its body-frame
 // angular momentum goes from I w0 to I w1 = cay(-h wm) I w0, the same rule read as a rotation
 // ((1 + h/2 [wm]x) I w1 = (1 - h/2 [wm]x) I w0). So the world-frame momentum R I w is kept
@@ -262,7 +256,7 @@ void World::fill_record() const {
   for (size_t i = 0; i < contacts_.size(); ++i) {
     const Contact& contact = contacts_[i];
     Real normal_impulse;
-    Vec3 friction_impulse;
+    Vec3 friction_impulse, point = contact.point, normal = contact.normal;
     if (teaching) {
       const TeachingImpulse& t = teaching_impulses_[i];
       Vec3 t1, t2;
@@ -270,13 +264,15 @@ void World::fill_record() const {
       normal_impulse = t.normal;
       friction_impulse = t.tangent1 * t1 + t.tangent2 * t2;
     } else {
+      // A point that bounced: where the surfaces met, and the normal then (contact_bounce.cpp).
       const ContactConstraint& c = contact_solver_.constraint_of(int(i));
       normal_impulse = c.total_normal_impulse;
       friction_impulse = c.total_tangent_impulse1 * c.tangent1 + c.total_tangent_impulse2 * c.tangent2;
+      point += contact_solver_.impact_shift(int(i));
+      normal = c.normal;
     }
     if (contact.separation > settings_.linear_slop && normal_impulse == 0) continue;
-    record_.contacts.push_back({contact.body_a, contact.body_b, contact.point, contact.normal, contact.penetration(), normal_impulse,
-                                friction_impulse});
+    record_.contacts.push_back({contact.body_a, contact.body_b, point, normal, contact.penetration(), normal_impulse, friction_impulse});
   }
   record_.joints.clear();
   for (const Joint& j : joints_) {

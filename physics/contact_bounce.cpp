@@ -1,0 +1,261 @@
+// The bounce stage of the default method's sub-steps (soft_step.h; restitution.h has its kernels):
+// in the sub-step in which a manifold's points meet faster than the threshold, answered at the
+// moment of contact, listing 1's way with its equations corrected:
+//   1. the hits: which points meet within the sub-step, when, and at what normal velocity;
+//   2. the pair at the moment the first meets: the lever arms to where the surfaces meet, from
+//      which the manifold's rows are written again for the rest of the step;
+//   3. the normal impulses of all the points that meet, together, to e times the velocity at which
+//      they meet (eq. 5, eq. 13 with 1 + e), with every joint on either body held;
+//   4. then friction: the manifold's own friction rows (friction.h), whose Coulomb disc counts the
+//      bounce's normal impulses, to stop the sliding where the surfaces meet or to slide through the
+//      whole impact at mu times the bounce, whichever Coulomb allows;
+//   5. every body the impact moved moves on from the moment of contact, as the exact motion does
+//      (taken back after the positions, unless the bodies around took the change up).
+// Momentum and angular momentum are kept exactly (every impulse acts on both bodies at one point);
+// each of 3 and 4 takes energy away or, at e = 1 and without friction, keeps it.
+#include "physics/contact_solver.h"
+#include "physics/friction.h"
+#include "physics/joint_solver.h"
+#include "physics/normal_impulse.h"
+#include "physics/restitution.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impulse::physics {
+
+namespace {
+
+// The impact's rows are iterated until a pass changes no impulse by more than this share of the
+// largest, or at most this often: the points of a face that lands flat, or a hit passing through
+// a chain of joints, need tens of passes to agree.
+constexpr Real kImpactTolerance = 1e-9;
+constexpr int kMostImpactPasses = 256;
+
+bool done(Real change, Real largest) { return change <= kImpactTolerance * largest; }
+
+// The normal velocity of a point (eq. 4 and 11 along n) from its rows in lane 0.
+Real normal_velocity(const BodyState& sa, const BodyState& sb, const Vec3& normal, const PointLanes& p) {
+  return (sa.v - sb.v).dot(normal) + sa.w.dot(lane(p.ra_cross_n, 0)) - sb.w.dot(lane(p.rb_cross_n, 0));
+}
+
+// `tangent` made perpendicular to `normal` again, turned as little as it can be.
+Vec3 across(const Vec3& tangent, const Vec3& normal) { return (tangent - tangent.dot(normal) * normal).normalized(); }
+
+}  // namespace
+
+// A manifold that can bounce is solved alone (contact_prepare.cpp), in lane 0 of its block.
+bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) {
+  ManifoldLanes& block = lanes_[lane_of_place_[place].block];
+  if (!block.can_bounce) return false;
+  ManifoldConstraint& m = manifolds_[place];
+  if (m.restitution == 0) return false;
+  ContactConstraint* points = &constraints_[m.first];
+  PointLanes* rows = &lane_points_[block.first_point];
+  // A pair bounces again in the same step (a later impact of a pack closing it again) only if it
+  // did not press last step. One that did is held by a load (the rows of a tall pyramid, whose
+  // soft contacts close at over 0.5 m/s as it settles): bounced over and over within a step it
+  // pumps the stack up; once, as every pair may, it does not.
+  if (m.bounce_speed > 0)
+    for (int i = 0; i < m.count; ++i)
+      if (points[i].normal_impulse > 0) return false;
+  BodyState& sa = solver_bodies.states[m.a];
+  BodyState& sb = solver_bodies.states[m.b];
+  const BodyInertia& ia = solver_bodies.inertia[m.a];
+  const BodyInertia& ib = solver_bodies.inertia[m.b];
+  // Cheap first: is any point closing fast enough to bounce at all?
+  bool closing = false;
+  for (int i = 0; i < m.count && !closing; ++i) closing = normal_velocity(sa, sb, m.normal, rows[i]) < -impact_threshold_;
+  if (!closing) return false;
+
+  // 1, 2. The hits, found at the geometry of the sub-step's start; then again at the moment the
+  // first of them meets, where the impulses act.
+  Real separation[kMaxManifoldPoints];
+  for (int i = 0; i < m.count; ++i) separation[i] = impact_separation(m, points[i], sa, sb);
+  Hit hits[kMaxManifoldPoints];
+  bool hit[kMaxManifoldPoints] = {};
+  Real acceleration = 0;  // gravity's, of A relative to B along the normal
+  auto find_hits = [&](const ImpactGeometry& g) {
+    acceleration = ((sa.inv_mass > 0 ? gravity_ : Vec3::Zero()) - (sb.inv_mass > 0 ? gravity_ : Vec3::Zero())).dot(g.normal);
+    bool any_hit = false;
+    for (int i = 0; i < m.count; ++i) {
+      const Real vn = relative_velocity(sa, sb, g.ra[i], g.rb[i]).dot(g.normal);
+      hit[i] = meets(separation[i], vn, acceleration, m.restitution, impact_threshold_, h, hits[i]);
+      any_hit = any_hit || hit[i];
+    }
+    return any_hit;
+  };
+  if (!find_hits(impact_geometry(m, points, sa, ia, sb, ib, 0))) return false;
+  // A pair that pressed last step is in contact already: its moment of contact is now (a box
+  // rocking onto its other edge, a settling stack), and its bodies' motion stays the solver's.
+  bool pressed = false;
+  for (int i = 0; i < m.count; ++i) pressed = pressed || points[i].normal_impulse > 0;
+  Real first_meeting = pressed ? 0 : h;
+  for (int i = 0; i < m.count; ++i)
+    if (hit[i]) first_meeting = std::min(first_meeting, hits[i].tau);
+  const ImpactGeometry g = impact_geometry(m, points, sa, ia, sb, ib, first_meeting);
+  if (!find_hits(g)) return false;
+  write_impact_rows(place, g, hit, separation, solver_bodies);
+
+  // 3. The normal impulses, the points that meet together, Gauss-Seidel forwards and backwards so
+  // that no point of a face that lands flat takes more than its share.
+  JointSolver* joints = joints_ && (joints_->jointed(m.a) || joints_->jointed(m.b)) ? joints_ : nullptr;
+  std::vector<int>& moved = impact_bodies_;
+  moved.assign({m.a, m.b});
+  if (joints) {
+    joints->begin_impact(m.a, m.b);
+    for (int slot : joints->impact_slots())
+      if (slot != m.a && slot != m.b) moved.push_back(slot);
+  }
+  std::vector<BodyState>& before = impact_before_;
+  before.clear();
+  for (int slot : moved) before.push_back(solver_bodies.states[slot]);
+  auto apply = [&](int i, Real impulse) {
+    add_velocity(sa, sa.inv_mass * impulse * g.normal, impulse * lane(rows[i].angular_a, 0));
+    add_velocity(sb, -(sb.inv_mass * impulse * g.normal), -(impulse * lane(rows[i].angular_b, 0)));
+  };
+  Real impulse[kMaxManifoldPoints] = {};
+  for (int pass = 0; pass < kMostImpactPasses; ++pass) {
+    Real change = 0, largest = 0;
+    for (int k = 0; k < m.count; ++k) {
+      const int i = pass % 2 ? m.count - 1 - k : k;
+      if (!hit[i]) continue;
+      const Real vn = normal_velocity(sa, sb, g.normal, rows[i]);
+      const Real new_impulse = std::max(impulse[i] + rows[i].normal_mass[0] * (hits[i].target - vn), Real(0));
+      apply(i, new_impulse - impulse[i]);
+      change = std::max(change, std::abs(new_impulse - impulse[i]));
+      impulse[i] = new_impulse;
+      largest = std::max(largest, new_impulse);
+    }
+    if (joints) change = std::max(change, joints->hold(solver_bodies, 1 / h));
+    if (pass > 0 && done(change, largest)) break;
+  }
+  Real bounced = 0;
+  for (int i = 0; i < m.count; ++i) {
+    if (!hit[i]) continue;
+    rows[i].total_normal_impulse[0] += impulse[i];
+    bounced += impulse[i];
+    m.hit_points |= uint8_t(1u << i);
+    impact_shift_[m.first + i] = g.moved_a + g.ra[i] - points[i].anchor_a;
+  }
+
+  // 4. Friction: the manifold's rows at the points that meet, within mu times the bounce, solved
+  // exactly (friction.h); again while the joints held change the sliding.
+  if (block.friction[0] > 0 && bounced > 0) {
+    Eigen::Matrix<Real, 2, 1> friction = Eigen::Matrix<Real, 2, 1>::Zero();
+    for (int pass = 0; pass < kMostImpactPasses; ++pass) {
+      const Eigen::Matrix<Real, 2, 1> before_pass = friction;
+      impact_friction(block, bounced, friction, sa, sb);
+      if (!joints) break;
+      const Real change = std::max((friction - before_pass).cwiseAbs().maxCoeff(), joints->hold(solver_bodies, 1 / h));
+      if (pass > 0 && done(change, bounced)) break;
+    }
+    block.total_tangent_impulse1[0] += friction[0];
+    block.total_tangent_impulse2[0] += friction[1];
+  }
+
+  // The friction rows for the rest of the step, the soft contact's: at all the points' centroid.
+  write_impact_rows(place, g, nullptr, separation, solver_bodies);
+
+  // 5. Every body the impact moved moves on from the moment of contact with its new velocity:
+  // after the positions, its motion is taken back by what the change would have moved it since the
+  // sub-step began, unless the bodies around have since taken the change up (take_back_motions).
+  ImpactMove& move = impact_moves_[place];
+  if (!m.move_pending) move = ImpactMove{};
+  m.move_pending = true;
+  for (size_t k = 0; k < moved.size(); ++k) {
+    const BodyState& s = solver_bodies.states[moved[k]];
+    BodyMove body_move{(s.v - before[k].v) * first_meeting, (s.w - before[k].w) * first_meeting, s.v, s.w, s.v - before[k].v,
+                       s.w - before[k].w};
+    if (k == 0) move.a.add(body_move);
+    else if (k == 1) move.b.add(body_move);
+    else joint_moves_.push_back({moved[k], body_move});
+  }
+  for (int i = 0; i < m.count; ++i)
+    if (hit[i]) m.bounce_speed = std::max(m.bounce_speed, hits[i].u);
+  return true;
+}
+
+// A body's motion taken back to the moment of contact while its velocity is still what the impact
+// left, within half the impact's change: a body that the bodies around have since stopped or
+// turned (a settling stack, a pack) keeps its motion as the solver left it.
+void ContactSolver::BodyMove::take_back(BodyState& s) const {
+  const bool linear = (s.v - v).squaredNorm() <= (dv / 2).squaredNorm();
+  const bool angular = (s.w - w).squaredNorm() <= (dw / 2).squaredNorm();
+  take_back_motion(s, linear ? dp : Vec3::Zero(), angular ? turn : Vec3::Zero());
+}
+
+void ContactSolver::BodyMove::add(const BodyMove& later) {
+  dp += later.dp;
+  turn += later.turn;
+  v = later.v;
+  w = later.w;
+  dv = later.dv;
+  dw = later.dw;
+}
+
+void ContactSolver::take_back_motions(int place, int width, std::vector<BodyState>& states) {
+  for (int k = 0; k < width; ++k) {
+    ManifoldConstraint& m = manifolds_[place + k];
+    if (!m.move_pending) continue;
+    m.move_pending = false;
+    impact_moves_[place + k].a.take_back(states[m.a]);
+    impact_moves_[place + k].b.take_back(states[m.b]);
+  }
+}
+
+void ContactSolver::take_back_joint_motions(std::vector<BodyState>& states) {
+  for (const auto& [slot, move] : joint_moves_) move.take_back(states[slot]);
+  joint_moves_.clear();
+}
+
+// The rows of manifold `place` (in lane 0) written again at the moment of contact `g`, friction's
+// at the centroid of the points that meet (`hit`), or of them all (null: for the rest of the step).
+// Two spheres take their line of centres as the normal: the normal, tangents and friction impulses
+// turn to it, and each point's separation stays what it is now.
+void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const bool* hit, const Real* separation,
+                                      const SolverBodies& solver_bodies) {
+  ManifoldLanes& block = lanes_[lane_of_place_[place].block];
+  ManifoldConstraint& m = manifolds_[place];
+  ContactConstraint* points = &constraints_[m.first];
+  PointLanes* rows = &lane_points_[block.first_point];
+  const BodyState& sa = solver_bodies.states[m.a];
+  const BodyState& sb = solver_bodies.states[m.b];
+  if (g.normal != m.normal) {
+    const Vec3 friction = block.tangent_impulse1[0] * m.tangent1 + block.tangent_impulse2[0] * m.tangent2;
+    const Vec3 total = block.total_tangent_impulse1[0] * m.tangent1 + block.total_tangent_impulse2[0] * m.tangent2;
+    m.tangent1 = across(m.tangent1, g.normal);
+    m.tangent2 = g.normal.cross(m.tangent1);
+    m.normal = g.normal;
+    for (int i = 0; i < m.count; ++i) {
+      points[i].normal = m.normal;
+      points[i].tangent1 = m.tangent1;
+      points[i].tangent2 = m.tangent2;
+      // Neither turns (spheres): the solver's separation is (dp_a - dp_b + anchor_a - anchor_b) . n + adjusted.
+      rows[i].adjusted_separation[0] = separation[i] - (sa.dp - sb.dp + points[i].anchor_a - points[i].anchor_b).dot(m.normal);
+    }
+    set_lane(block.normal, 0, m.normal);
+    set_lane(block.tangent1, 0, m.tangent1);
+    set_lane(block.tangent2, 0, m.tangent2);
+    block.tangent_impulse1[0] = friction.dot(m.tangent1);
+    block.tangent_impulse2[0] = friction.dot(m.tangent2);
+    block.total_tangent_impulse1[0] = total.dot(m.tangent1);
+    block.total_tangent_impulse2[0] = total.dot(m.tangent2);
+  }
+  Vec3 centre_a = Vec3::Zero(), centre_b = Vec3::Zero();
+  int counted = 0;
+  for (int i = 0; i < m.count; ++i)
+    if (!hit || hit[i]) centre_a += g.ra[i], centre_b += g.rb[i], ++counted;
+  const RowGeometry rows_geometry{m.normal, m.tangent1, m.tangent2, m.count, g.ra, g.rb, centre_a / counted, centre_b / counted,
+                                  sa.inv_mass, sb.inv_mass, &g.inv_inertia_a, &g.inv_inertia_b};
+  if (hit) set_rows(block, rows, 0, rows_geometry);
+  else set_friction_rows(block, 0, rows_geometry);
+}
+
+bool ContactSolver::bounce_manifolds(int place, int width, SolverBodies& solver_bodies, Real h) {
+  bool bounced = false;
+  for (int l = 0; l < width; ++l) bounced |= bounce_lane(place + l, solver_bodies, h);
+  return bounced;
+}
+
+}  // namespace impulse::physics

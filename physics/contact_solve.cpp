@@ -1,0 +1,129 @@
+// The solve stage of the default method's sub-steps (soft_step.h), and the relax stage, which is
+// the same solve without the position bias (Box2D v3 and Box3D run one function for both): the
+// normal rows (normal_impulse.h) and friction rows (friction.h) of two manifolds side by side
+// (contact_lanes.h). Branches become lane-wise selections; the bits are those of solving the two
+// manifolds one after the other. In the biased solve a manifold that meets fast enough bounces
+// instead (contact_bounce.cpp).
+#include "physics/contact_solver.h"
+#include "physics/friction.h"
+#include "physics/normal_impulse.h"
+
+namespace impulse::physics {
+
+bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_bodies, Real inv_h, bool use_bias) {
+  ManifoldLanes& block = lanes_[lane_of_place_[place].block];
+  // A manifold that bounces is answered by its bounce alone in this solve (restitution.h); the
+  // bounce's impulses go to the lane's totals.
+  Mask2 solved = {0, 0};
+  bool bounced = false;
+  for (int l = 0; l < width; ++l) {
+    if (use_bias && bounce_lane(place + l, solver_bodies, 1 / inv_h)) bounced = true;
+    else solved[l] = -1;
+  }
+  if (!any(solved)) return bounced;
+  // The points, the direction and the pass known to the compiler: the rows stay in registers.
+  using Solve = void (ContactSolver::*)(ManifoldLanes&, Mask2, SolverBodies&, Real);
+  static constexpr Solve kSolves[4][2][2] = {
+      {{&ContactSolver::solve_lanes<1, false, false>, &ContactSolver::solve_lanes<1, false, true>},
+       {&ContactSolver::solve_lanes<1, true, false>, &ContactSolver::solve_lanes<1, true, true>}},
+      {{&ContactSolver::solve_lanes<2, false, false>, &ContactSolver::solve_lanes<2, false, true>},
+       {&ContactSolver::solve_lanes<2, true, false>, &ContactSolver::solve_lanes<2, true, true>}},
+      {{&ContactSolver::solve_lanes<3, false, false>, &ContactSolver::solve_lanes<3, false, true>},
+       {&ContactSolver::solve_lanes<3, true, false>, &ContactSolver::solve_lanes<3, true, true>}},
+      {{&ContactSolver::solve_lanes<4, false, false>, &ContactSolver::solve_lanes<4, false, true>},
+       {&ContactSolver::solve_lanes<4, true, false>, &ContactSolver::solve_lanes<4, true, true>}}};
+  (this->*kSolves[block.points - 1][backwards_][use_bias])(block, solved, solver_bodies, inv_h);
+  return bounced;
+}
+
+// The lanes `solved` of a block of manifolds with N points each, which move no body in common.
+//
+// Normal rows (normal_impulse.h): Gauss-Seidel point after point, as if each impulse were applied
+// to the bodies at once; but the points of one pair see each other only through the coupling
+// matrix, so the pass updates their normal velocities alone, and the bodies get the sum
+// afterwards (the same arithmetic, without a chain through the bodies' velocities after every
+// point). One pass, in turn forwards and backwards from one sub-step to the next: always
+// forwards, the first point gets more than its share, and a wall of boxes one box thick (the
+// 21-box pyramid) starts to sway. Then the friction rows (friction.h) at the points' centroid.
+template <int N, bool Backwards, bool UseBias>
+void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies& solver_bodies, Real inv_h) {
+  std::vector<BodyState>& states = solver_bodies.states;
+  BodyState* sa[2] = {&states[block.a[0]], &states[block.a[1]]};
+  BodyState* sb[2] = {&states[block.b[0]], &states[block.b[1]]};
+  PointLanes* points = &lane_points_[block.first_point];
+  V3 va = lanes(sa[0]->v, sa[1]->v), wa = lanes(sa[0]->w, sa[1]->w);
+  V3 vb = lanes(sb[0]->v, sb[1]->v), wb = lanes(sb[0]->w, sb[1]->w);
+  const Real2 inv_mass_a{sa[0]->inv_mass, sa[1]->inv_mass}, inv_mass_b{sb[0]->inv_mass, sb[1]->inv_mass};
+  const V3 dp = lanes(sa[0]->dp, sa[1]->dp) - lanes(sb[0]->dp, sb[1]->dp);
+  const Q4 dq_a = lanes(sa[0]->dq, sa[1]->dq), dq_b = lanes(sb[0]->dq, sb[1]->dq);
+  const V3& normal = block.normal;
+
+  // Each point's separation now (positions do not change during the passes) and normal velocity.
+  // The points share the normal: n . (dq r) = (dq^-1 n) . r turns the normal back once per body
+  // instead of turning every anchor. A sphere's surface stays put as it turns; a still body's dq is 1.
+  auto turned_back = [&](const Q4& dq, Real2 turns) {
+    const Mask2 mask = turns != 0;
+    return any(mask) ? select(mask, rotate(conjugate(dq), normal), normal) : normal;
+  };
+  const V3 normal_in_a = turned_back(dq_a, block.turns_a);
+  const V3 normal_in_b = turned_back(dq_b, block.turns_b);
+  const Real2 moved = dot(dp, normal);
+  const Real2 dv_n = dot(va - vb, normal);
+  const Real2 max_push = splat(-settings_.max_push_velocity);
+  Real2 vn[N], impulse[N];
+  NormalRow rows[N];
+  for (int i = 0; i < N; ++i) {
+    const PointLanes& p = points[i];
+    const Real2 separation = separation_now(moved, normal_in_a, normal_in_b, p.anchor_a, p.anchor_b, p.adjusted_separation);
+    vn[i] = dv_n + dot(wa, p.ra_cross_n) - dot(wb, p.rb_cross_n);
+    impulse[i] = p.normal_impulse;
+    rows[i] = soft_normal_row<UseBias>(separation, impulse[i], p.normal_mass, softness_, inv_h, max_push);
+  }
+  Real2 applied_sum = splat(0);
+  V3 turn_a{applied_sum, applied_sum, applied_sum}, turn_b = turn_a;
+  for (int order = 0; order < N; ++order) {
+    const int k = Backwards ? N - 1 - order : order;
+    const Real2 new_impulse = clamped_normal_impulse(rows[k], vn[k]);
+    const Real2 applied = new_impulse - impulse[k];
+    impulse[k] = new_impulse;
+    applied_sum = applied_sum + applied;
+    turn_a = turn_a + applied * points[k].angular_a;
+    turn_b = turn_b + applied * points[k].angular_b;
+    for (int j = 0; j < N; ++j)
+      if (j != k) vn[j] = vn[j] + block.coupling[j][k] * applied;
+  }
+  Real2 normal_sum = splat(0);
+  for (int i = 0; i < N; ++i) normal_sum = normal_sum + impulse[i];
+  const V3 linear = applied_sum * normal;
+  va = va + inv_mass_a * linear;
+  wa = wa + turn_a;
+  vb = vb - inv_mass_b * linear;
+  wb = wb - turn_b;
+
+  Real2 j1 = block.tangent_impulse1, j2 = block.tangent_impulse2, twist = block.twist_impulse;
+  if (any(block.friction != 0))
+    solve_friction_lanes<UseBias>(block, normal_sum, inv_mass_a, inv_mass_b, va, wa, vb, wb, j1, j2, twist);
+  if constexpr (!UseBias) {
+    if (any(block.rolling_radius > 0)) resist_rolling(block, solved, normal_sum, sa, sb, solver_bodies.inertia, wa, wb);
+  }
+
+  // Only the solved lanes: the other bounced, or is empty.
+  for (int i = 0; i < N; ++i) points[i].normal_impulse = select(solved, impulse[i], points[i].normal_impulse);
+  block.tangent_impulse1 = select(solved, j1, block.tangent_impulse1);
+  block.tangent_impulse2 = select(solved, j2, block.tangent_impulse2);
+  block.twist_impulse = select(solved, twist, block.twist_impulse);
+  for (int l = 0; l < 2; ++l) {
+    if (!solved[l]) continue;
+    // A still body's state is not even written: the other thread may be reading it.
+    if (sa[l]->inv_mass != 0) {
+      sa[l]->v = lane(va, l);
+      sa[l]->w = lane(wa, l);
+    }
+    if (sb[l]->inv_mass != 0) {
+      sb[l]->v = lane(vb, l);
+      sb[l]->w = lane(wb, l);
+    }
+  }
+}
+
+}  // namespace impulse::physics
