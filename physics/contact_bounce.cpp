@@ -85,7 +85,13 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
     }
     return any_hit;
   };
-  if (!find_hits(impact_geometry(m, points, sa, ia, sb, ib, 0))) return false;
+  // Closing fast but not meeting in this sub-step: the rows at its start, so that the soft
+  // contact's speculative rows, which may close the gap and no more, see the pair as the bounce does.
+  const ImpactGeometry now = impact_geometry(m, points, sa, ia, sb, ib, 0);
+  if (!find_hits(now)) {
+    write_impact_rows(place, now, nullptr, separation, solver_bodies, true);
+    return false;
+  }
   // A pair that pressed last step is in contact already: its moment of contact is now (a box
   // rocking onto its other edge, a settling stack), and its bodies' motion stays the solver's.
   bool pressed = false;
@@ -95,7 +101,7 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
     if (hit[i]) first_meeting = std::min(first_meeting, hits[i].tau);
   const ImpactGeometry g = impact_geometry(m, points, sa, ia, sb, ib, first_meeting);
   if (!find_hits(g)) return false;
-  write_impact_rows(place, g, hit, separation, solver_bodies);
+  write_impact_rows(place, g, hit, separation, solver_bodies, true);
 
   // 3. The normal impulses, the points that meet together, Gauss-Seidel forwards and backwards so
   // that no point of a face that lands flat takes more than its share.
@@ -155,7 +161,7 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   }
 
   // The friction rows for the rest of the step, the soft contact's: at all the points' centroid.
-  write_impact_rows(place, g, nullptr, separation, solver_bodies);
+  write_impact_rows(place, g, nullptr, separation, solver_bodies, false);
 
   // 5. Every body the impact moved moves on from the moment of contact with its new velocity:
   // after the positions, its motion is taken back by what the change would have moved it since the
@@ -209,12 +215,12 @@ void ContactSolver::take_back_joint_motions(std::vector<BodyState>& states) {
   joint_moves_.clear();
 }
 
-// The rows of manifold `place` (in lane 0) written again at the moment of contact `g`, friction's
-// at the centroid of the points that meet (`hit`), or of them all (null: for the rest of the step).
-// Two spheres take their line of centres as the normal: the normal, tangents and friction impulses
-// turn to it, and each point's separation stays what it is now.
+// The rows of manifold `place` (in lane 0) written again at the geometry `g`, friction's at the
+// centroid of the points that meet (`hit`), or of them all (null: the soft contact's); the normal
+// rows too, or friction's alone. Two spheres take their line of centres as the normal: the normal,
+// tangents and friction impulses turn to it, and each point's separation stays what it is now.
 void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const bool* hit, const Real* separation,
-                                      const SolverBodies& solver_bodies) {
+                                      const SolverBodies& solver_bodies, bool normal_rows) {
   ManifoldLanes& block = lanes_[lane_of_place_[place].block];
   ManifoldConstraint& m = manifolds_[place];
   ContactConstraint* points = &constraints_[m.first];
@@ -248,7 +254,7 @@ void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const 
     if (!hit || hit[i]) centre_a += g.ra[i], centre_b += g.rb[i], ++counted;
   const RowGeometry rows_geometry{m.normal, m.tangent1, m.tangent2, m.count, g.ra, g.rb, centre_a / counted, centre_b / counted,
                                   sa.inv_mass, sb.inv_mass, &g.inv_inertia_a, &g.inv_inertia_b};
-  if (hit) set_rows(block, rows, 0, rows_geometry);
+  if (normal_rows) set_rows(block, rows, 0, rows_geometry);
   else set_friction_rows(block, 0, rows_geometry);
 }
 

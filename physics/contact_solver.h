@@ -110,7 +110,8 @@ class ContactSolver {
                            const SolverBodies& solver_bodies);
   static void warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous);
   bool bounce_lane(int place, SolverBodies& solver_bodies, Real h);
-  void write_impact_rows(int place, const ImpactGeometry& g, const bool* hit, const Real* separation, const SolverBodies& solver_bodies);
+  void write_impact_rows(int place, const ImpactGeometry& g, const bool* hit, const Real* separation, const SolverBodies& solver_bodies,
+                         bool normal_rows);
   int manifold_of_constraint(int constraint) const;
   ManifoldLanes& begin_lanes(int place, const ManifoldConstraint& m);
   void fill_lanes(int place, const ManifoldConstraint& m);
