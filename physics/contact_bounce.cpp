@@ -9,8 +9,9 @@
 //   4. then friction: the manifold's own friction rows (friction.h), whose Coulomb disc counts the
 //      bounce's normal impulses, to stop the sliding where the surfaces meet or to slide through the
 //      whole impact at mu times the bounce, whichever Coulomb allows;
-//   5. every body the impact moved moves on from the moment of contact, as the exact motion does
-//      (taken back after the positions, unless the bodies around took the change up).
+//   5. every body the impact moved moves on from the moment of contact, as the exact motion does:
+//      the impulses act on the bodies as they are then (moved on by their old velocities), which
+//      are then moved back to the sub-step's start along their new ones.
 // Momentum and angular momentum are kept exactly (every impulse acts on both bodies at one point);
 // each of 3 and 4 takes energy away or, at e = 1 and without friction, keeps it.
 #include "physics/contact_solver.h"
@@ -113,9 +114,8 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
     for (int slot : joints->impact_slots())
       if (slot != m.a && slot != m.b) moved.push_back(slot);
   }
-  std::vector<BodyState>& before = impact_before_;
-  before.clear();
-  for (int slot : moved) before.push_back(solver_bodies.states[slot]);
+  // The bodies at the moment of contact: the impulses act there, the joints held there too.
+  for (int slot : moved) advance(solver_bodies.states[slot], first_meeting);
   auto apply = [&](int i, Real impulse) {
     add_velocity(sa, sa.inv_mass * impulse * g.normal, impulse * lane(rows[i].angular_a, 0));
     add_velocity(sb, -(sb.inv_mass * impulse * g.normal), -(impulse * lane(rows[i].angular_b, 0)));
@@ -163,56 +163,12 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   // The friction rows for the rest of the step, the soft contact's: at all the points' centroid.
   write_impact_rows(place, g, nullptr, separation, solver_bodies, false);
 
-  // 5. Every body the impact moved moves on from the moment of contact with its new velocity:
-  // after the positions, its motion is taken back by what the change would have moved it since the
-  // sub-step began, unless the bodies around have since taken the change up (take_back_motions).
-  ImpactMove& move = impact_moves_[place];
-  if (!m.move_pending) move = ImpactMove{};
-  m.move_pending = true;
-  for (size_t k = 0; k < moved.size(); ++k) {
-    const BodyState& s = solver_bodies.states[moved[k]];
-    BodyMove body_move{(s.v - before[k].v) * first_meeting, (s.w - before[k].w) * first_meeting, s.v, s.w, s.v - before[k].v,
-                       s.w - before[k].w};
-    if (k == 0) move.a.add(body_move);
-    else if (k == 1) move.b.add(body_move);
-    else joint_moves_.push_back({moved[k], body_move});
-  }
+  // 5. Every body the impact moved moves on from the moment of contact with its new velocity: back
+  // to the sub-step's start along it, where the positions' integration takes it from.
+  for (int slot : moved) advance(solver_bodies.states[slot], -first_meeting);
   for (int i = 0; i < m.count; ++i)
     if (hit[i]) m.bounce_speed = std::max(m.bounce_speed, hits[i].u);
   return true;
-}
-
-// A body's motion taken back to the moment of contact while its velocity is still what the impact
-// left, within half the impact's change: a body that the bodies around have since stopped or
-// turned (a settling stack, a pack) keeps its motion as the solver left it.
-void ContactSolver::BodyMove::take_back(BodyState& s) const {
-  const bool linear = (s.v - v).squaredNorm() <= (dv / 2).squaredNorm();
-  const bool angular = (s.w - w).squaredNorm() <= (dw / 2).squaredNorm();
-  take_back_motion(s, linear ? dp : Vec3::Zero(), angular ? turn : Vec3::Zero());
-}
-
-void ContactSolver::BodyMove::add(const BodyMove& later) {
-  dp += later.dp;
-  turn += later.turn;
-  v = later.v;
-  w = later.w;
-  dv = later.dv;
-  dw = later.dw;
-}
-
-void ContactSolver::take_back_motions(int place, int width, std::vector<BodyState>& states) {
-  for (int k = 0; k < width; ++k) {
-    ManifoldConstraint& m = manifolds_[place + k];
-    if (!m.move_pending) continue;
-    m.move_pending = false;
-    impact_moves_[place + k].a.take_back(states[m.a]);
-    impact_moves_[place + k].b.take_back(states[m.b]);
-  }
-}
-
-void ContactSolver::take_back_joint_motions(std::vector<BodyState>& states) {
-  for (const auto& [slot, move] : joint_moves_) move.take_back(states[slot]);
-  joint_moves_.clear();
 }
 
 // The rows of manifold `place` (in lane 0) written again at the geometry `g`, friction's at the

@@ -65,7 +65,6 @@ struct alignas(64) ManifoldConstraint {
   Real radius_a = 0, radius_b = 0;
   bool turns_a = true, turns_b = true;
   uint8_t hit_points = 0;              // bit i: point i bounced this step (contact_bounce.cpp)
-  bool move_pending = false;           // a bounce's motion to take back after this sub-step's positions
 };
 
 // A manifold's load at the end of a step, for StackSink: its last sub-step's impulse and the sum of

@@ -140,7 +140,6 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   }
   lane_points_.resize(points);
   impact_shift_.resize(contacts.size());  // written for the points that bounce (ManifoldConstraint::hit_points)
-  impact_moves_.resize(order.size());     // written for the manifolds that bounce (ManifoldConstraint::move_pending)
   find_previous_pairs();
   // Each thread builds the manifolds it sweeps, from the states and bodies it loaded.
   schedule_.run(*team_, [&](int thread) {

@@ -64,11 +64,6 @@ class ContactSolver {
   bool solve_manifolds(int place, int width, SolverBodies& solver_bodies, Real inv_h, bool use_bias);
   // The bounces alone, for the impact passes after the biased solve (soft_step.h): whether one bounced.
   bool bounce_manifolds(int place, int width, SolverBodies& solver_bodies, Real h);
-  // After the positions of a sub-step in which something bounced: the bounced pairs' motion, and
-  // that of the bodies on their joints (on one thread, after the sweep), taken back to the moment of
-  // contact (restitution.h, take_back_motion).
-  void take_back_motions(int place, int width, std::vector<BodyState>& states);
-  void take_back_joint_motions(std::vector<BodyState>& states);
   void add_to_totals(int place);  // the sub-step's impulses to the step's totals, after the relax pass
   void end_substep() { backwards_ = !backwards_; }  // the next sub-step goes through the points the other way
 
@@ -160,22 +155,7 @@ class ContactSolver {
   Vec3 gravity_ = Vec3::Zero();
   JointSolver* joints_ = nullptr;     // hold_joints()
   std::vector<Vec3> impact_shift_;    // per constraint, for the points that bounced (impact_shift())
-  std::vector<int> impact_bodies_;    // a bounce's: the slots it moves, and their states before it
-  std::vector<BodyState> impact_before_;
-  // A bounce's change of a body's motion, to take back after the positions: by `dp` and `turn`
-  // (its change of velocity dv, dw times the time before the moment of contact), while its velocity
-  // is still about v, w.
-  struct BodyMove {
-    Vec3 dp = Vec3::Zero(), turn = Vec3::Zero(), v = Vec3::Zero(), w = Vec3::Zero(), dv = Vec3::Zero(), dw = Vec3::Zero();
-    void add(const BodyMove& later);  // a second bounce in the same sub-step
-    void take_back(BodyState& s) const;
-  };
-  struct ImpactMove {
-    BodyMove a, b;
-  };
-  std::vector<ImpactMove> impact_moves_;  // per place, while ManifoldConstraint::move_pending
-  using JointMove = std::pair<int, BodyMove>;  // a slot, and its move
-  std::vector<JointMove> joint_moves_;    // the bodies on a bounced pair's joints
+  std::vector<int> impact_bodies_;    // a bounce's: the slots it moves
   Softness softness_;  // every contact's, for this step's sub-steps (prepare())
   bool backwards_ = false;  // this sub-step's order of a manifold's points (solve_lanes)
   ThreadTeam* team_ = nullptr;

@@ -99,10 +99,10 @@ Real impact_separation(const ManifoldConstraint& m, const ContactConstraint& c, 
   return separation_now(m.normal, c.anchor_a, c.anchor_b, c.adjusted_separation, sa, m.turns_a, sb, m.turns_b);
 }
 
-void take_back_motion(BodyState& s, const Vec3& dp, const Vec3& turn_back) {
-  if (s.inv_mass == 0) return;
-  s.dp -= dp;
-  turn(s.dq, -turn_back, 1);
+void advance(BodyState& s, Real t) {
+  if (s.inv_mass == 0 || t == 0) return;
+  s.dp += s.v * t;
+  turn(s.dq, s.w, t);
 }
 
 }  // namespace impulse::physics

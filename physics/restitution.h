@@ -1,6 +1,6 @@
 // The moment of impact (eq. 5, v_n+ = -e v_n-, with eq. 8 and 13's 1 + e), its kernels on plain
 // data: when a point meets within a sub-step and how fast, where each body's surface is at that
-// moment (the lever arms r_a, r_b of eq. 13), and the motion that then starts at that moment. ContactSolver's bounce stage (contact_bounce.cpp) runs them on a manifold
+// moment (the lever arms r_a, r_b of eq. 13), and the bodies moved to that moment and back. ContactSolver's bounce stage (contact_bounce.cpp) runs them on a manifold
 // and applies the impulses: the normal ones to e times the speed at which the surfaces meet, then
 // the contact's own friction rows within mu times them (listing 1's order), with the joints held.
 #pragma once
@@ -68,11 +68,11 @@ ImpactGeometry impact_geometry(const ManifoldConstraint& m, const ContactConstra
 // spheres, whose gap is measured on their line of centres as impact_geometry() takes the normal.
 Real impact_separation(const ManifoldConstraint& m, const ContactConstraint& c, const BodyState& sa, const BodyState& sb);
 
-// A body's motion over a sub-step, taken again as though its velocity had changed by (dv, dw) at
-// `tau` rather than at the start: `dp` = dv tau is taken off its displacement, and it is turned back
-// by `turn` = dw tau. So a bounced pair moves as the exact motion does, meeting at `tau` and parting
-// from there, and angular momentum about any point is kept (the impulse acted at the bodies'
-// positions at `tau`).
-void take_back_motion(BodyState& s, const Vec3& dp, const Vec3& turn);
+// A body moved on by t along its velocity, turned by its angular velocity (back, for t < 0): to
+// the moment of contact, where an impact's impulses act; and back from it along the new velocity.
+// So a bounced pair moves as the exact motion does, meeting at the moment of contact and parting
+// from there, and angular momentum about any point is kept (every impulse acts at the bodies'
+// positions then).
+void advance(BodyState& s, Real t);
 
 }  // namespace impulse::physics

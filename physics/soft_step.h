@@ -7,9 +7,7 @@
 //   3. solve with the soft position bias; a contact that meets fast enough bounces at the moment
 //      of contact (contact_bounce.cpp), with the joints on its bodies held; then the impact passes
 //   4. integrate positions
-//   5. take the bounced bodies' motion back to the moment of contact (only in a sub-step in which
-//      something bounced)
-//   6. relax: solve again without the bias, then add the sub-step's impulses to the step's totals
+//   5. relax: solve again without the bias, then add the sub-step's impulses to the step's totals
 //
 // The whole sub-step is one job of the thread team: its threads meet at a barrier between the
 // stages instead of being woken for each.
@@ -55,10 +53,10 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
   ThreadTeam& team = contacts.team();
   // One epoch per sweep, increasing in the order the sweeps run: a place waits for another
   // thread's counter to reach its sweep's epoch, so a sweep numbered below one already run would
-  // not wait at all (warm start, solve, the impact passes, take back, relax).
+  // not wait at all (warm start, solve, the impact passes, relax).
   contacts.hold_joints(joints);
-  const uint64_t epoch = schedule.new_epochs(4 + kImpactPasses);
-  const uint64_t first_pass = epoch + 2, take_back = first_pass + kImpactPasses, relax = take_back + 1;
+  const uint64_t epoch = schedule.new_epochs(3 + kImpactPasses);
+  const uint64_t first_pass = epoch + 2, relax = first_pass + kImpactPasses;
   const bool parallel = schedule.parallel();
   if (bounced_threads_ < team.size()) {  // the flags only grow: a sweep's epoch is newer than any value
     bounced_ = std::make_unique<BounceEpoch[]>(2 * team.size());
@@ -95,23 +93,14 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
     // the hits reach it (sequential impulses; Guendelman, Bridson and Fedkiw 2003), never by the
     // relax pass's inelastic rows. Each pass keeps momentum, angular momentum, and with e = 1 the
     // energy; passes beyond kImpactPasses are left to the rows.
-    bool any_bounced = bounced_in(epoch + 1);
-    for (uint64_t pass = first_pass, last = epoch + 1; bounced_in(last) && pass < take_back; last = pass++) {
+    for (uint64_t pass = first_pass, last = epoch + 1; bounced_in(last) && pass < relax; last = pass++) {
       bounced = false;
       schedule.sweep_share(thread, pass, [&](int place, int width) { bounced |= contacts.bounce_manifolds(place, width, bodies, h); });
       if (bounced) bounce_flag(thread, pass).store(pass, std::memory_order_relaxed);
       meet();
-      any_bounced = true;
     }
     schedule.slot_share(thread, integrate_position);
     meet();
-    // Most sub-steps nothing bounces (resting piles): then no sweep to take motion back. The
-    // barriers order the flags; every thread reads the same and takes the same way.
-    if (any_bounced) {
-      schedule.sweep_share(thread, take_back, [&](int place, int width) { contacts.take_back_motions(place, width, bodies.states); });
-      meet();
-      joint_stage(thread, [&] { contacts.take_back_joint_motions(bodies.states); });
-    }
     joint_stage(thread, [&] { joints->solve(bodies, 1 / h, false); });
     schedule.sweep_share(thread, relax, [&](int place, int width) {
       contacts.solve_manifolds(place, width, bodies, 1 / h, false);

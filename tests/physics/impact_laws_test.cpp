@@ -8,7 +8,9 @@
 //   2. then Coulomb friction at the point, from the velocity the normal impulse left: of the
 //      impulses in the disc |j| <= mu J, the one that leaves the least kinetic energy (the point
 //      stops sliding when that is within the disc, else it slides through the impact).
-// Energy never rises, and a frictionless bounce never changes a sphere's spin.
+// Energy never rises, and a frictionless bounce never changes a sphere's spin. And bodies that hang
+// on joints take part in the impact with their joints held: eq. 5 at the contact, angular momentum
+// about the fixed pivot kept, the joints holding.
 #include "tests/physics/generated_scenes.h"
 
 #include <algorithm>
@@ -243,6 +245,133 @@ TEST(ImpactLaws, ABodyThrownAtAStillSurfaceLeavesAsTheImpactModelSays) {
                   (body.angular_velocity - before.angular_velocity).norm() > 0.01)
                 return breach_text("a frictionless bounce changed a sphere's spin by", (body.angular_velocity - before.angular_velocity).norm(),
                                    0.01);
+              return std::string();
+            });
+}
+
+// A body on joints to a fixed pivot at the origin struck by (or striking) a free ball, in zero
+// gravity: a ball on a rod (a pendulum), a ball pinned by a ball joint outside it (a rigid
+// pendulum), a plank on a hinge struck on one side of it (a seesaw), two balls on rods in a row (a
+// chain). The jointed body turns about the pivot at 1 to 5 rad/s; the free ball waits on its path
+// or falls onto the plank. Friction is off in half of them (there eq. 5 holds at the contact: with
+// friction the tangential impulse changes the normal speed too, through the joints). Every other
+// scene runs 1200 steps a second, so that the velocities just before and after the impact are the
+// states around the step that holds it (a chain's links change their velocities on after it).
+std::string jointed_impact(Draw& draw) {
+  for (;;) {
+    std::ostringstream text;
+    const bool fine = draw.coin();
+    const double e = draw.uniform(0, 1), mu = draw.coin() ? 0.0 : draw.uniform(0, 1);
+    const std::string material = "restitution = " + SceneText::number(e) + "\nfriction = " + SceneText::number(mu) + "\n";
+    text << "[scene]\ntitle = \"jointed impact\"\nduration = 0.6\n[world]\ngravity = [0, 0, 0]\nsleeping = false\nstep_rate = "
+         << (fine ? 1200 : 60) << "\n";
+    auto ball = [&](const std::string& name, const Vec3& at, double radius, double mass, const Vec3& velocity, const Vec3& spin) {
+      text << "[[body]]\nname = \"" << name << "\"\nshape = \"sphere\"\nradius = " << SceneText::number(radius)
+           << "\nmass = " << SceneText::number(mass) << "\nposition = " << SceneText::vector(at) << "\nvelocity = "
+           << SceneText::vector(velocity) << "\nangular_velocity = " << SceneText::vector(spin) << "\n" << material;
+    };
+    const int kind = draw.integer(0, 3);  // pendulum on a rod, rigid pendulum, seesaw, chain
+    const double omega = draw.uniform(1, 5) * (draw.coin() ? 1 : -1);
+    const Vec3 turning(0, 0, omega);
+    const double free_radius = draw.uniform(0.05, 0.25), free_mass = draw.uniform(0.2, 5);
+    if (kind == 2) {
+      const double length = draw.uniform(1, 3), hinge = draw.uniform(-0.3, 0.3) * length, plank_mass = draw.uniform(0.5, 5);
+      const double slow = draw.uniform(-0.5, 0.5);  // the plank's own turning, rad/s
+      text << "[[body]]\nname = \"jointed\"\nshape = \"box\"\nsize = [" << SceneText::number(length) << ", 0.05, 0.3]\nmass = "
+           << SceneText::number(plank_mass) << "\nposition = " << SceneText::vector(Vec3(-hinge, 0, 0)) << "\nvelocity = "
+           << SceneText::vector(Vec3(0, slow * -hinge, 0)) << "\nangular_velocity = [0, 0, " << SceneText::number(slow) << "]\n"
+           << material;
+      text << "[[joint]]\ntype = \"hinge\"\na = \"jointed\"\nanchor = [0, 0, 0]\naxis = [0, 0, 1]\n";
+      double along = draw.uniform(-0.45, 0.45) * length - hinge;
+      if (std::abs(along) < 0.1) continue;
+      const double fall = draw.uniform(1, 5), t_hit = draw.uniform(0.05, 0.25);
+      ball("free", Vec3(along + draw.uniform(-0.5, 0.5) * t_hit, 0.025 + free_radius + fall * t_hit, draw.uniform(-0.1, 0.1)), free_radius,
+           free_mass, Vec3(draw.uniform(-0.5, 0.5), -fall, 0), Vec3::Zero());
+      return text.str();
+    }
+    // The free ball on the jointed ball's circle (a little off it: an oblique hit), ahead of it.
+    const double length = draw.uniform(0.5, 1.5), radius = draw.uniform(0.05, 0.2), mass = draw.uniform(0.2, 5);
+    const double at_hit = draw.uniform(0, 2 * M_PI), t_hit = draw.uniform(0.05, 0.3);
+    const double start = at_hit - omega * t_hit - (omega > 0 ? 1 : -1) * (radius + free_radius) / length;
+    auto on_circle = [](double r, double angle) { return Vec3(r * std::cos(angle), r * std::sin(angle), 0); };
+    const Vec3 free_at = on_circle(length + draw.uniform(-0.7, 0.7) * (radius + free_radius), at_hit);
+    if (kind == 3) {  // chain: an inner ball half way out, clear of the outer one and of the free ball
+      if (length / 2 < 2 * radius + 0.05 || free_at.norm() - length / 2 < radius + free_radius + 0.05) continue;
+      const Vec3 inner = on_circle(length / 2, start);
+      ball("inner", inner, radius, mass, turning.cross(inner), Vec3::Zero());
+    }
+    const Vec3 at = on_circle(length, start);
+    ball("jointed", at, radius, mass, turning.cross(at), kind == 1 ? turning : Vec3::Zero());
+    if ((free_at - at).norm() < radius + free_radius + 0.01) continue;
+    ball("free", free_at, free_radius, free_mass, Vec3::Zero(), Vec3::Zero());
+    if (kind == 0) text << "[[joint]]\ntype = \"rod\"\na = \"world\"\nb = \"jointed\"\nanchor_a = [0, 0, 0]\nanchor_b = " << SceneText::vector(at) << "\n";
+    if (kind == 1) text << "[[joint]]\ntype = \"ball\"\na = \"jointed\"\nanchor = [0, 0, 0]\n";
+    if (kind == 3)
+      text << "[[joint]]\ntype = \"rod\"\na = \"world\"\nb = \"inner\"\nanchor_a = [0, 0, 0]\nanchor_b = "
+           << SceneText::vector(on_circle(length / 2, start)) << "\n[[joint]]\ntype = \"rod\"\na = \"inner\"\nb = \"jointed\"\n"
+           << "anchor_a = " << SceneText::vector(on_circle(length / 2, start)) << "\nanchor_b = " << SceneText::vector(at) << "\n";
+    return text.str();
+  }
+}
+
+// Angular momentum about the origin (the pivot) of the moving bodies; about the hinge's axis alone
+// where a hinge holds (it can take up a turn about any other axis).
+Vec3 angular_momentum_about_pivot(const physics::World& world) {
+  Vec3 l = Vec3::Zero();
+  for (const physics::Body& b : world.bodies())
+    if (!b.is_static()) l += b.position.cross(b.mass * b.velocity) + b.inertia_world() * b.angular_velocity;
+  for (const physics::Joint& j : world.joints())
+    if (j.type == physics::JointType::hinge) return Vec3(0, 0, l.z());
+  return l;
+}
+
+// A body's point velocity, v + w x (p - x).
+Vec3 point_velocity(const physics::Body& b, const Vec3& p) { return b.velocity + b.angular_velocity.cross(p - b.position); }
+
+TEST(ImpactLaws, JointsTakePartInTheImpact) {
+  struct Seen {
+    std::vector<physics::Body> before;  // the bodies at the start of the step
+    bool struck = false;
+  };
+  auto seen = std::make_shared<Seen>();
+  check_law("jointed-impact", 80, jointed_impact,
+            [seen](const physics::World& world, const physics::StepRecord& start, const std::vector<physics::Body>& initial) {
+              if (world.step_count() == 1) *seen = {initial, false};
+              const physics::StepRecord& now = world.record();
+              const std::vector<physics::Body> before = std::exchange(seen->before, world.bodies());
+              if (now.kinetic_energy > start.kinetic_energy * (1 + 1e-6))
+                return breach_text("kinetic energy rose to", now.kinetic_energy, start.kinetic_energy);
+              const Vec3 l0 = [&] {
+                Vec3 l = Vec3::Zero();
+                for (const physics::Body& b : initial)
+                  if (!b.is_static()) l += b.position.cross(b.mass * b.velocity) + b.inertia_world() * b.angular_velocity;
+                for (const physics::Joint& j : world.joints())
+                  if (j.type == physics::JointType::hinge) return Vec3(0, 0, l.z());
+                return l;
+              }();
+              const double l_change = (angular_momentum_about_pivot(world) - l0).norm();
+              if (l_change > 1e-3 * l0.norm() + 1e-9)
+                return breach_text("angular momentum about the pivot changed by", l_change, 1e-3 * l0.norm());
+              for (const physics::JointRecord& j : now.joints) {
+                const physics::Joint& joint = world.joints()[&j - now.joints.data()];
+                const double off = joint.type == physics::JointType::distance ? std::abs((j.anchor_a - j.anchor_b).norm() - joint.length)
+                                                                              : (j.anchor_a - j.anchor_b).norm();
+                if (off > 0.001) return breach_text("a joint let go by (m)", off, 0.001);
+              }
+              // Eq. 5 at the contact, in the step that holds the first impact (1200 steps a second, no friction).
+              const physics::Material material = initial.back().material;
+              const bool fine = world.settings().time_step < 0.001;
+              for (const physics::ContactRecord& c : now.contacts) {
+                if (seen->struck || c.normal_impulse <= 0) continue;
+                seen->struck = true;
+                if (!fine || material.friction > 0 || material.restitution < 0.05) continue;
+                auto normal_speed = [&](const std::vector<physics::Body>& bodies) {
+                  return (point_velocity(bodies[c.body_a], c.point) - point_velocity(bodies[c.body_b], c.point)).dot(c.normal);
+                };
+                const double approach = normal_speed(before), parting = normal_speed(world.bodies());
+                if (std::abs(parting + material.restitution * approach) > 0.02 * std::abs(approach))
+                  return breach_text("eq. 5: parting at", parting, -material.restitution * approach);
+              }
               return std::string();
             });
 }
