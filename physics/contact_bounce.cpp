@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace impulse::physics {
 
@@ -35,9 +36,9 @@ constexpr int kMostImpactPasses = 256;
 
 bool done(Real change, Real largest) { return change <= kImpactTolerance * largest; }
 
-// The normal velocity of a point (eq. 4 and 11 along n) from its rows in lane 0.
-Real normal_velocity(const BodyState& sa, const BodyState& sb, const Vec3& normal, const PointLanes& p) {
-  return (sa.v - sb.v).dot(normal) + sa.w.dot(lane(p.ra_cross_n, 0)) - sb.w.dot(lane(p.rb_cross_n, 0));
+// The normal velocity of a point (eq. 4 and 11 along n) from its rows in lane l.
+Real normal_velocity(const BodyState& sa, const BodyState& sb, const Vec3& normal, const PointLanes& p, int l) {
+  return (sa.v - sb.v).dot(normal) + sa.w.dot(lane(p.ra_cross_n, l)) - sb.w.dot(lane(p.rb_cross_n, l));
 }
 
 // `tangent` made perpendicular to `normal` again, turned as little as it can be.
@@ -45,14 +46,19 @@ Vec3 across(const Vec3& tangent, const Vec3& normal) { return (tangent - tangent
 
 }  // namespace
 
-// A manifold that can bounce is solved alone (contact_prepare.cpp), in lane 0 of its block.
+// A manifold in lane l of its block (one that can bounce is alone, in lane 0: contact_prepare.cpp).
 bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) {
-  ManifoldLanes& block = lanes_[lane_of_place_[place].block];
-  if (!block.can_bounce) return false;
-  ManifoldConstraint& m = manifolds_[place];
-  if (m.restitution == 0) return false;
-  ContactConstraint* points = &constraints_[m.first];
+  const auto [index, l] = lane_of_place_[place];
+  ManifoldLanes& block = lanes_[index];
   PointLanes* rows = &lane_points_[block.first_point];
+  // A pair pressing nowhere in this sub-step may be landing: slower than the threshold, an impact
+  // too, plastic. (So the points of a face that lands flat are answered together.) The lanes'
+  // own data first: a pressed pair that cannot bounce, a resting stack's, is done.
+  bool unpressed = true;
+  for (int i = 0; i < block.points; ++i) unpressed = unpressed && rows[i].normal_impulse[l] == 0;
+  if (!block.can_bounce && !unpressed) return false;
+  ManifoldConstraint& m = manifolds_[place];
+  ContactConstraint* points = &constraints_[m.first];
   // A pair bounces again in the same step (a later impact of a pack closing it again) only if it
   // did not press last step. One that did is held by a load (the rows of a tall pyramid, whose
   // soft contacts close at over 0.5 m/s as it settles): bounced over and over within a step it
@@ -60,19 +66,26 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   if (m.bounce_speed > 0)
     for (int i = 0; i < m.count; ++i)
       if (points[i].normal_impulse > 0) return false;
+  const bool can_bounce = block.can_bounce && m.restitution > 0;
+  if (!can_bounce && !unpressed) return false;
   BodyState& sa = solver_bodies.states[m.a];
   BodyState& sb = solver_bodies.states[m.b];
   const BodyInertia& ia = solver_bodies.inertia[m.a];
   const BodyInertia& ib = solver_bodies.inertia[m.b];
-  // Cheap first: is any point closing fast enough to bounce at all?
+  const Real fast_enough = unpressed ? landing_speed_ : impact_threshold_;
   bool closing = false;
-  for (int i = 0; i < m.count && !closing; ++i) closing = normal_velocity(sa, sb, m.normal, rows[i]) < -impact_threshold_;
+  for (int i = 0; i < m.count && !closing; ++i) closing = normal_velocity(sa, sb, m.normal, rows[i], l) < -fast_enough;
   if (!closing) return false;
 
   // 1, 2. The hits, found at the geometry of the sub-step's start; then again at the moment the
   // first of them meets, where the impulses act.
   Real separation[kMaxManifoldPoints];
-  for (int i = 0; i < m.count; ++i) separation[i] = impact_separation(m, points[i], sa, sb);
+  bool apart = true;  // every point: a landing comes from apart
+  for (int i = 0; i < m.count; ++i) {
+    separation[i] = impact_separation(m, points[i], sa, sb);
+    apart = apart && separation[i] > kTouching;
+  }
+  if (!can_bounce && !apart) return false;
   Hit hits[kMaxManifoldPoints];
   bool hit[kMaxManifoldPoints] = {};
   Real acceleration = 0;  // gravity's, of A relative to B along the normal
@@ -81,7 +94,9 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
     bool any_hit = false;
     for (int i = 0; i < m.count; ++i) {
       const Real vn = relative_velocity(sa, sb, g.ra[i], g.rb[i]).dot(g.normal);
-      hit[i] = meets(separation[i], vn, acceleration, m.restitution, impact_threshold_, h, hits[i]);
+      const bool bounces = can_bounce && vn < -impact_threshold_;
+      hit[i] = (bounces || (unpressed && apart)) &&
+               meets(separation[i], vn, acceleration, bounces ? m.restitution : 0, bounces ? impact_threshold_ : landing_speed_, h, hits[i]);
       any_hit = any_hit || hit[i];
     }
     return any_hit;
@@ -105,29 +120,38 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   write_impact_rows(place, g, hit, separation, solver_bodies, true);
 
   // 3. The normal impulses, the points that meet together, Gauss-Seidel forwards and backwards so
-  // that no point of a face that lands flat takes more than its share.
+  // that no point of a face that lands flat takes more than its share. A point of the pair that
+  // touches already takes part too, plastic (it may push, to no approach): a box rocking onto its
+  // other edge is held at the edge it rests on, not driven in by the turn the landing gives it.
+  bool holds[kMaxManifoldPoints] = {};
+  for (int i = 0; i < m.count; ++i) holds[i] = !hit[i] && separation[i] <= kTouching;
   JointSolver* joints = joints_ && (joints_->jointed(m.a) || joints_->jointed(m.b)) ? joints_ : nullptr;
-  std::vector<int>& moved = impact_bodies_;
-  moved.assign({m.a, m.b});
+  // Without joints bounces run on several threads at once: the pair's own two slots; with joints
+  // (one thread) the cluster's too.
+  const int pair[2] = {m.a, m.b};
+  std::span<const int> moved(pair);
   if (joints) {
+    impact_bodies_.assign({m.a, m.b});
     joints->begin_impact(m.a, m.b);
     for (int slot : joints->impact_slots())
-      if (slot != m.a && slot != m.b) moved.push_back(slot);
+      if (slot != m.a && slot != m.b) impact_bodies_.push_back(slot);
+    moved = impact_bodies_;
   }
   // The bodies at the moment of contact: the impulses act there, the joints held there too.
   for (int slot : moved) advance(solver_bodies.states[slot], first_meeting);
   auto apply = [&](int i, Real impulse) {
-    add_velocity(sa, sa.inv_mass * impulse * g.normal, impulse * lane(rows[i].angular_a, 0));
-    add_velocity(sb, -(sb.inv_mass * impulse * g.normal), -(impulse * lane(rows[i].angular_b, 0)));
+    add_velocity(sa, sa.inv_mass * impulse * g.normal, impulse * lane(rows[i].angular_a, l));
+    add_velocity(sb, -(sb.inv_mass * impulse * g.normal), -(impulse * lane(rows[i].angular_b, l)));
   };
   Real impulse[kMaxManifoldPoints] = {};
   for (int pass = 0; pass < kMostImpactPasses; ++pass) {
     Real change = 0, largest = 0;
     for (int k = 0; k < m.count; ++k) {
       const int i = pass % 2 ? m.count - 1 - k : k;
-      if (!hit[i]) continue;
-      const Real vn = normal_velocity(sa, sb, g.normal, rows[i]);
-      const Real new_impulse = std::max(impulse[i] + rows[i].normal_mass[0] * (hits[i].target - vn), Real(0));
+      if (!hit[i] && !holds[i]) continue;
+      const Real vn = normal_velocity(sa, sb, g.normal, rows[i], l);
+      const Real target = hit[i] ? hits[i].target : 0;
+      const Real new_impulse = std::max(impulse[i] + rows[i].normal_mass[l] * (target - vn), Real(0));
       apply(i, new_impulse - impulse[i]);
       change = std::max(change, std::abs(new_impulse - impulse[i]));
       impulse[i] = new_impulse;
@@ -138,8 +162,8 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   }
   Real bounced = 0;
   for (int i = 0; i < m.count; ++i) {
+    rows[i].total_normal_impulse[l] += impulse[i];
     if (!hit[i]) continue;
-    rows[i].total_normal_impulse[0] += impulse[i];
     bounced += impulse[i];
     m.hit_points |= uint8_t(1u << i);
     impact_shift_[m.first + i] = g.moved_a + g.ra[i] - points[i].anchor_a;
@@ -147,17 +171,17 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
 
   // 4. Friction: the manifold's rows at the points that meet, within mu times the bounce, solved
   // exactly (friction.h); again while the joints held change the sliding.
-  if (block.friction[0] > 0 && bounced > 0) {
+  if (block.friction[l] > 0 && bounced > 0) {
     Eigen::Matrix<Real, 2, 1> friction = Eigen::Matrix<Real, 2, 1>::Zero();
     for (int pass = 0; pass < kMostImpactPasses; ++pass) {
       const Eigen::Matrix<Real, 2, 1> before_pass = friction;
-      impact_friction(block, bounced, friction, sa, sb);
+      impact_friction(block, l, bounced, friction, sa, sb);
       if (!joints) break;
       const Real change = std::max((friction - before_pass).cwiseAbs().maxCoeff(), joints->hold(solver_bodies, 1 / h));
       if (pass > 0 && done(change, bounced)) break;
     }
-    block.total_tangent_impulse1[0] += friction[0];
-    block.total_tangent_impulse2[0] += friction[1];
+    block.total_tangent_impulse1[l] += friction[0];
+    block.total_tangent_impulse2[l] += friction[1];
   }
 
   // The friction rows for the rest of the step, the soft contact's: at all the points' centroid.
@@ -171,21 +195,22 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   return true;
 }
 
-// The rows of manifold `place` (in lane 0) written again at the geometry `g`, friction's at the
+// The rows of manifold `place` (in its lane) written again at the geometry `g`, friction's at the
 // centroid of the points that meet (`hit`), or of them all (null: the soft contact's); the normal
 // rows too, or friction's alone. Two spheres take their line of centres as the normal: the normal,
 // tangents and friction impulses turn to it, and each point's separation stays what it is now.
 void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const bool* hit, const Real* separation,
                                       const SolverBodies& solver_bodies, bool normal_rows) {
-  ManifoldLanes& block = lanes_[lane_of_place_[place].block];
+  const auto [index, l] = lane_of_place_[place];
+  ManifoldLanes& block = lanes_[index];
   ManifoldConstraint& m = manifolds_[place];
   ContactConstraint* points = &constraints_[m.first];
   PointLanes* rows = &lane_points_[block.first_point];
   const BodyState& sa = solver_bodies.states[m.a];
   const BodyState& sb = solver_bodies.states[m.b];
   if (g.normal != m.normal) {
-    const Vec3 friction = block.tangent_impulse1[0] * m.tangent1 + block.tangent_impulse2[0] * m.tangent2;
-    const Vec3 total = block.total_tangent_impulse1[0] * m.tangent1 + block.total_tangent_impulse2[0] * m.tangent2;
+    const Vec3 friction = block.tangent_impulse1[l] * m.tangent1 + block.tangent_impulse2[l] * m.tangent2;
+    const Vec3 total = block.total_tangent_impulse1[l] * m.tangent1 + block.total_tangent_impulse2[l] * m.tangent2;
     m.tangent1 = across(m.tangent1, g.normal);
     m.tangent2 = g.normal.cross(m.tangent1);
     m.normal = g.normal;
@@ -194,15 +219,15 @@ void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const 
       points[i].tangent1 = m.tangent1;
       points[i].tangent2 = m.tangent2;
       // Neither turns (spheres): the solver's separation is (dp_a - dp_b + anchor_a - anchor_b) . n + adjusted.
-      rows[i].adjusted_separation[0] = separation[i] - (sa.dp - sb.dp + points[i].anchor_a - points[i].anchor_b).dot(m.normal);
+      rows[i].adjusted_separation[l] = separation[i] - (sa.dp - sb.dp + points[i].anchor_a - points[i].anchor_b).dot(m.normal);
     }
-    set_lane(block.normal, 0, m.normal);
-    set_lane(block.tangent1, 0, m.tangent1);
-    set_lane(block.tangent2, 0, m.tangent2);
-    block.tangent_impulse1[0] = friction.dot(m.tangent1);
-    block.tangent_impulse2[0] = friction.dot(m.tangent2);
-    block.total_tangent_impulse1[0] = total.dot(m.tangent1);
-    block.total_tangent_impulse2[0] = total.dot(m.tangent2);
+    set_lane(block.normal, l, m.normal);
+    set_lane(block.tangent1, l, m.tangent1);
+    set_lane(block.tangent2, l, m.tangent2);
+    block.tangent_impulse1[l] = friction.dot(m.tangent1);
+    block.tangent_impulse2[l] = friction.dot(m.tangent2);
+    block.total_tangent_impulse1[l] = total.dot(m.tangent1);
+    block.total_tangent_impulse2[l] = total.dot(m.tangent2);
   }
   Vec3 centre_a = Vec3::Zero(), centre_b = Vec3::Zero();
   int counted = 0;
@@ -210,8 +235,8 @@ void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const 
     if (!hit || hit[i]) centre_a += g.ra[i], centre_b += g.rb[i], ++counted;
   const RowGeometry rows_geometry{m.normal, m.tangent1, m.tangent2, m.count, g.ra, g.rb, centre_a / counted, centre_b / counted,
                                   sa.inv_mass, sb.inv_mass, &g.inv_inertia_a, &g.inv_inertia_b};
-  if (normal_rows) set_rows(block, rows, 0, rows_geometry);
-  else set_friction_rows(block, 0, rows_geometry);
+  if (normal_rows) set_rows(block, rows, l, rows_geometry);
+  else set_friction_rows(block, l, rows_geometry);
 }
 
 bool ContactSolver::bounce_manifolds(int place, int width, SolverBodies& solver_bodies, Real h) {

@@ -91,6 +91,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   settings_ = settings;
   gravity_ = gravity;
   impact_threshold_ = impact_threshold(settings.restitution_threshold, gravity);
+  landing_speed_ = kLandingShare * impact_threshold_;
   const Real hertz = std::min(settings.contact_hertz, kMaxHertzPerSubstepRate / h);
   // One stiffness for every contact. Box2D makes contacts with static bodies twice as stiff; so
   // made, a 1 kg box between the ground and a 100 kg box rattles at 0.1-0.3 m/s for ever: its

@@ -10,6 +10,13 @@
 
 namespace impulse::physics {
 
+namespace {
+// The passes over a pair's points (solve_lanes): until a pass changes no point's normal velocity
+// by more than this, or at most this many.
+constexpr Real kTolerance = 1e-5;  // m/s
+constexpr int kMostPasses = 4;
+}  // namespace
+
 bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_bodies, Real inv_h, bool use_bias) {
   ManifoldLanes& block = lanes_[lane_of_place_[place].block];
   // A manifold that bounces is answered by its bounce alone in this solve (restitution.h); the
@@ -40,11 +47,14 @@ bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_b
 //
 // Normal rows (normal_impulse.h): Gauss-Seidel point after point, as if each impulse were applied
 // to the bodies at once; but the points of one pair see each other only through the coupling
-// matrix, so the pass updates their normal velocities alone, and the bodies get the sum
+// matrix, so the passes update their normal velocities alone, and the bodies get the sum
 // afterwards (the same arithmetic, without a chain through the bodies' velocities after every
-// point). One pass, in turn forwards and backwards from one sub-step to the next: always
-// forwards, the first point gets more than its share, and a wall of boxes one box thick (the
-// 21-box pyramid) starts to sway. Then the friction rows (friction.h) at the points' centroid.
+// point). The passes over a pair's points go on until they agree: the pair's soft rows solved
+// (the biased solve's compliant rows, the relax solve's rigid ones), so that no point of a face
+// gets more than its share whatever the order (one pass leaves the first point more: a box that
+// lands flat starts to turn, a wall of boxes one box thick sways). They start forwards and
+// backwards in turn from one sub-step to the next. Then the friction rows (friction.h) at the
+// points' centroid.
 template <int N, bool Backwards, bool UseBias>
 void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies& solver_bodies, Real inv_h) {
   std::vector<BodyState>& states = solver_bodies.states;
@@ -77,20 +87,25 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies
     const Real2 separation = separation_now(moved, normal_in_a, normal_in_b, p.anchor_a, p.anchor_b, p.adjusted_separation);
     vn[i] = dv_n + dot(wa, p.ra_cross_n) - dot(wb, p.rb_cross_n);
     impulse[i] = p.normal_impulse;
-    rows[i] = soft_normal_row<UseBias>(separation, impulse[i], p.normal_mass, softness_, inv_h, max_push);
+    rows[i] = soft_normal_row<UseBias>(separation, p.normal_mass, softness_, inv_h, max_push);
   }
   Real2 applied_sum = splat(0);
   V3 turn_a{applied_sum, applied_sum, applied_sum}, turn_b = turn_a;
-  for (int order = 0; order < N; ++order) {
-    const int k = Backwards ? N - 1 - order : order;
-    const Real2 new_impulse = clamped_normal_impulse(rows[k], vn[k]);
-    const Real2 applied = new_impulse - impulse[k];
-    impulse[k] = new_impulse;
-    applied_sum = applied_sum + applied;
-    turn_a = turn_a + applied * points[k].angular_a;
-    turn_b = turn_b + applied * points[k].angular_b;
-    for (int j = 0; j < N; ++j)
-      if (j != k) vn[j] = vn[j] + block.coupling[j][k] * applied;
+  for (int pass = 0; pass < (N > 1 ? kMostPasses : 1); ++pass) {
+    Real2 vn_before[N];
+    for (int k = 0; k < N; ++k) vn_before[k] = vn[k];
+    for (int order = 0; order < N; ++order) {
+      const int k = (pass % 2 == 1) != Backwards ? N - 1 - order : order;
+      const Real2 applied = select(solved, clamped_normal_impulse(rows[k], impulse[k], vn[k]), impulse[k]) - impulse[k];
+      impulse[k] = impulse[k] + applied;
+      applied_sum = applied_sum + applied;
+      turn_a = turn_a + applied * points[k].angular_a;
+      turn_b = turn_b + applied * points[k].angular_b;
+      for (int j = 0; j < N; ++j) vn[j] = vn[j] + block.coupling[j][k] * applied;
+    }
+    Mask2 moving = (vn[0] - vn_before[0] > kTolerance) | (vn_before[0] - vn[0] > kTolerance);
+    for (int k = 1; k < N; ++k) moving = moving | (vn[k] - vn_before[k] > kTolerance) | (vn_before[k] - vn[k] > kTolerance);
+    if (!any(moving)) break;
   }
   Real2 normal_sum = splat(0);
   for (int i = 0; i < N; ++i) normal_sum = normal_sum + impulse[i];

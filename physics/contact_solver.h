@@ -152,6 +152,7 @@ class ContactSolver {
   Real h_ = 0, stored_h_ = 0;      // this step's sub-step, and the stored impulses'
   ContactSolverSettings settings_;
   Real impact_threshold_ = 0;  // m/s: slower hits do not bounce (restitution.h, impact_threshold)
+  Real landing_speed_ = 0;     // m/s: a pair apart and pressing nowhere that closes faster lands (contact_bounce.cpp)
   Vec3 gravity_ = Vec3::Zero();
   JointSolver* joints_ = nullptr;     // hold_joints()
   std::vector<Vec3> impact_shift_;    // per constraint, for the points that bounced (impact_shift())

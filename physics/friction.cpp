@@ -7,12 +7,9 @@ namespace impulse::physics {
 using Vec2 = Eigen::Matrix<Real, 2, 1>;
 using Mat2 = Eigen::Matrix<Real, 2, 2>;
 
-namespace {
-
-// The point of the disc |x| <= limit that minimises (x - j0)^T K (x - j0) / 2 + (x - j0)^T v, K
-// symmetric positive definite: inside, x = j0 - K^-1 v; else on the rim, x = (K + l I)^-1 b with
-// b = K j0 - v and l >= 0 the root of 1/limit - 1/|x(l)| (Newton's method from l = 0, which this
-// function approaches from below without overshooting: More and Sorensen's trust-region step).
+// Inside, x = j0 - K^-1 v; else on the rim, x = (K + l I)^-1 b with b = K j0 - v and l >= 0 the
+// root of 1/limit - 1/|x(l)| (Newton's method from l = 0, which approaches it from below without
+// overshooting: More and Sorensen's trust-region step).
 Vec2 least_energy_in_disc(const Mat2& k, const Vec2& v, const Vec2& j0, Real limit) {
   const Vec2 b = k * j0 - v;
   const Real det = k.determinant();
@@ -35,22 +32,20 @@ Vec2 least_energy_in_disc(const Mat2& k, const Vec2& v, const Vec2& j0, Real lim
   return x * std::min(Real(1), limit / x.norm());
 }
 
-}  // namespace
-
-void impact_friction(const ManifoldLanes& block, Real bounce, Vec2& impulse, BodyState& sa, BodyState& sb) {
-  const Vec3 t1 = lane(block.tangent1, 0), t2 = lane(block.tangent2, 0);
-  const Vec3 ra_t1 = lane(block.ra_cross_t1, 0), ra_t2 = lane(block.ra_cross_t2, 0);
-  const Vec3 rb_t1 = lane(block.rb_cross_t1, 0), rb_t2 = lane(block.rb_cross_t2, 0);
-  const Vec3 turn_a1 = lane(block.turn_a1, 0), turn_a2 = lane(block.turn_a2, 0);
-  const Vec3 turn_b1 = lane(block.turn_b1, 0), turn_b2 = lane(block.turn_b2, 0);
+void impact_friction(const ManifoldLanes& block, int l, Real bounce, Vec2& impulse, BodyState& sa, BodyState& sb) {
+  const Vec3 t1 = lane(block.tangent1, l), t2 = lane(block.tangent2, l);
+  const Vec3 ra_t1 = lane(block.ra_cross_t1, l), ra_t2 = lane(block.ra_cross_t2, l);
+  const Vec3 rb_t1 = lane(block.rb_cross_t1, l), rb_t2 = lane(block.rb_cross_t2, l);
+  const Vec3 turn_a1 = lane(block.turn_a1, l), turn_a2 = lane(block.turn_a2, l);
+  const Vec3 turn_b1 = lane(block.turn_b1, l), turn_b2 = lane(block.turn_b2, l);
   // The tangents' effective mass matrix: eq. 13's denominator along each, and between them.
   Mat2 k;
-  k(0, 0) = safe_inverse(block.tangent_mass1[0]);
-  k(1, 1) = safe_inverse(block.tangent_mass2[0]);
+  k(0, 0) = safe_inverse(block.tangent_mass1[l]);
+  k(1, 1) = safe_inverse(block.tangent_mass2[l]);
   k(0, 1) = k(1, 0) = (sa.inv_mass + sb.inv_mass) * t1.dot(t2) + ra_t1.dot(turn_a2) + rb_t1.dot(turn_b2);
   const Vec3 dv = sa.v - sb.v;
   const Vec2 v(dv.dot(t1) + sa.w.dot(ra_t1) - sb.w.dot(rb_t1), dv.dot(t2) + sa.w.dot(ra_t2) - sb.w.dot(rb_t2));
-  const Vec2 j = least_energy_in_disc(k, v, impulse, block.friction[0] * bounce) - impulse;
+  const Vec2 j = least_energy_in_disc(k, v, impulse, block.friction[l] * bounce) - impulse;
   impulse += j;
   add_velocity(sa, sa.inv_mass * (j[0] * t1 + j[1] * t2), j[0] * turn_a1 + j[1] * turn_a2);
   add_velocity(sb, -(sb.inv_mass * (j[0] * t1 + j[1] * t2)), -(j[0] * turn_b1 + j[1] * turn_b2));

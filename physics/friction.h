@@ -62,7 +62,7 @@ template <bool UseBias>
   wb = wb - (applied1 * block.turn_b1 + applied2 * block.turn_b2 + applied_twist * block.twist_b);
 }
 
-// Friction at an impact (contact_bounce.cpp), on lane 0 of the block of a manifold that bounced:
+// Friction at an impact (contact_bounce.cpp), on lane l of the block of a manifold that bounced:
 // its rows solved exactly by Coulomb's law with maximum dissipation. Of the friction impulses j
 // within the disc |j| <= mu J (J: the bounce's normal impulse), the one that leaves the bodies the
 // least kinetic energy: the impulse that stops the sliding where the surfaces meet when Coulomb
@@ -71,7 +71,13 @@ template <bool UseBias>
 // the rows' accumulated impulses (the soft contact's, which the next sub-step warm starts).
 // `impulse`, on the two tangents: the impact's so far (0 at first; again after the joints held
 // have moved the bodies), changed to the new one.
-void impact_friction(const ManifoldLanes& block, Real bounce, Eigen::Matrix<Real, 2, 1>& impulse, BodyState& sa, BodyState& sb);
+void impact_friction(const ManifoldLanes& block, int l, Real bounce, Eigen::Matrix<Real, 2, 1>& impulse, BodyState& sa, BodyState& sb);
+
+// impact_friction()'s kernel: the point of the disc |x| <= limit that minimises the kinetic energy
+// left, (x - j0)^T K (x - j0) / 2 + (x - j0)^T v (K: the tangents' effective mass matrix, symmetric
+// positive definite; v: the sliding velocity after j0).
+Eigen::Matrix<Real, 2, 1> least_energy_in_disc(const Eigen::Matrix<Real, 2, 2>& k, const Eigen::Matrix<Real, 2, 1>& v,
+                                               const Eigen::Matrix<Real, 2, 1>& j0, Real limit);
 
 // Rolling resistance, in the relax pass, for a sphere's one point (the lanes `solved` whose
 // rolling_radius is set): an angular impulse about the tangents against the bodies' relative

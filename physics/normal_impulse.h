@@ -60,32 +60,40 @@ inline Real separation_now(const Vec3& normal, const Vec3& anchor_a, const Vec3&
 }
 
 // The default method's normal row for one point, two pairs side by side (lanes.h): the new
-// accumulated impulse is max(rhs - mass vn, 0) (eq. 13's J, clamped to push only), where `mass`
-// and `rhs` are set once per pass by soft_normal_row(). The target is "stop approaching" with a
-// soft position correction (Box2D v3's soft step) in the biased pass; restitution is a bounce's.
+// accumulated impulse from the accumulated one I and the normal velocity vn is
+//   max(keep I - push - mass vn, 0)
+// (eq. 13's J, clamped to push only), the row set once per sub-step by soft_normal_row(). The
+// target is "stop approaching" with a soft position correction in the biased pass (Box2D v3's
+// soft step: push = mass bias, keep = 1 - impulse_scale), without in the relax pass; a
+// bounce's target is restitution's (contact_bounce.cpp).
 struct NormalRow {
-  Real2 mass, rhs;
+  Real2 mass, push, keep;
 };
 
-// `separation` now; `impulse` the point's accumulated impulse; `normal_mass` 1 / eq. 13's
-// denominator. A speculative point (apart) may close its gap this sub-step, no further; the relax
-// pass leaves it be (mass 0): the next solve clamps it anyway, and slowing a body before it
-// touches would lose the speed it hits with.
+// `separation` now; `normal_mass` 1 / eq. 13's denominator. A speculative point (apart) may close
+// its gap this sub-step, no further; the relax pass leaves it be (mass 0): the next solve clamps
+// it anyway, and slowing a body before it touches would lose the speed it hits with. Within
+// kTouching the surfaces touch: a face that closed its gap would otherwise have some corners
+// apart and others not, by rounding.
+constexpr Real kTouching = 1e-6;  // m
 template <bool UseBias>
-[[gnu::always_inline]] inline NormalRow soft_normal_row(Real2 separation, Real2 impulse, Real2 normal_mass, const Softness& softness,
-                                                        Real inv_h, Real2 max_push) {
-  const Mask2 apart = separation > 0;
+[[gnu::always_inline]] inline NormalRow soft_normal_row(Real2 separation, Real2 normal_mass, const Softness& softness, Real inv_h,
+                                                        Real2 max_push) {
+  const Mask2 apart = separation > kTouching;
   if constexpr (UseBias) {
     const Real2 soft_bias = splat(softness.bias_rate) * separation;
     const Real2 bias = select(apart, separation * inv_h, select(soft_bias < max_push, max_push, soft_bias));
     const Real2 mass = select(apart, normal_mass, normal_mass * splat(softness.mass_scale));
-    return {mass, impulse - mass * bias - select(apart, splat(0), splat(softness.impulse_scale)) * impulse};
+    return {mass, mass * bias, select(apart, splat(1), splat(1 - softness.impulse_scale))};
   } else {
-    return {select(apart, splat(0), normal_mass), impulse};
+    return {select(apart, splat(0), normal_mass), splat(0), splat(1)};
   }
 }
 
-// The row's new accumulated impulse at normal velocity vn: pushing only.
-[[gnu::always_inline]] inline Real2 clamped_normal_impulse(const NormalRow& row, Real2 vn) { return max0(row.rhs - row.mass * vn); }
+// The row's new accumulated impulse, from the accumulated `impulse` and the normal velocity `vn`
+// before this row's own change since then: pushing only.
+[[gnu::always_inline]] inline Real2 clamped_normal_impulse(const NormalRow& row, Real2 impulse, Real2 vn) {
+  return max0(row.keep * impulse - row.push - row.mass * vn);
+}
 
 }  // namespace impulse::physics

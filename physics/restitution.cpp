@@ -47,12 +47,14 @@ Vec3 centres_apart(const ContactConstraint& c, const BodyState& sa, const BodySt
 }  // namespace
 
 bool meets(Real separation, Real vn, Real a, Real restitution, Real threshold, Real h, Hit& hit) {
-  if (vn > -threshold || separation + vn * h > 0) return false;
+  // Within kTouching at the sub-step's end the surfaces touch (the relax pass's rows would stop
+  // them there): they meet in this sub-step, at its end at the latest.
+  if (vn > -threshold || separation + vn * h > kTouching) return false;
   hit.gap = std::max(separation, Real(0));
   hit.touch = touch_velocity(vn, hit.gap, a, h);
   if (hit.touch >= 0) return false;
   const Real v_start = vn - a * h / 2;
-  hit.tau = hit.gap > 0 ? 2 * hit.gap / -(v_start + hit.touch) : 0;
+  hit.tau = hit.gap > 0 ? std::min(2 * hit.gap / -(v_start + hit.touch), h) : 0;
   hit.u = -restitution * hit.touch;
   hit.target = hit.u + a * (h / 2 - hit.tau);
   return true;

@@ -23,6 +23,11 @@ constexpr Real kThresholdGravity = Real(9.81);  // m/s^2, the default [world] gr
 inline Real impact_threshold(Real restitution_threshold, const Vec3& gravity) {
   return restitution_threshold * std::max(kImpactFloor, gravity.norm() / kThresholdGravity);
 }
+// Slower hits are plastic, the soft contact's; a pair apart and pressing nowhere that closes at
+// more than this share of the threshold is landing: an impact too, plastic (contact_bounce.cpp),
+// so that the points of a face that lands flat are stopped together. Slower closings are a
+// resting pile's settling.
+constexpr Real kLandingShare = Real(0.1);
 
 // How a point meets within a sub-step of h, timed exactly under the constant relative acceleration
 // `a` along the normal (gravity's): the surfaces, `gap` apart at the start, meet after `tau` at

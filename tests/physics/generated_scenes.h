@@ -150,7 +150,7 @@ inline std::string run_case(const std::string& name, uint64_t seed, const std::s
   const fs::path directory = fs::path(testing::TempDir()) / "impulse-laws";
   fs::create_directories(directory);
   const fs::path path = directory / (name + "-" + std::to_string(seed) + ".toml");
-  std::ofstream(path) << "# " << name << ", seed " << seed << " (tests/physics/generated_laws_test.cpp)\n"
+  std::ofstream(path) << "# " << name << ", seed " << seed << " (tests/physics/generated_laws_test.cpp, impact_laws_test.cpp)\n"
                       << scene_text;
   const Scene scene = load_scene(path.string());
   physics::World world = build_world(scene);

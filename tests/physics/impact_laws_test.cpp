@@ -376,5 +376,37 @@ TEST(ImpactLaws, JointsTakePartInTheImpact) {
             });
 }
 
+// A box dropped flat (its faces level, turned any way about the vertical), from 0.2 to 2 m, onto the
+// ground or a static box, with gravity: its four corners land together, and it must not start to
+// turn however the solver orders them (no spin above 0.01 rad/s), bouncing or at rest.
+std::string flat_landing(Draw& draw) {
+  const double e = draw.uniform(0, 1), mu = draw.uniform(0, 1);
+  const std::string material = "restitution = " + SceneText::number(e) + "\nfriction = " + SceneText::number(mu) + "\n";
+  std::ostringstream text;
+  text << "[scene]\ntitle = \"flat landing\"\nduration = 2.0\n[world]\nsleeping = false\n";
+  const bool on_box = draw.coin();
+  const Vec3 size(draw.uniform(0.1, 1.5), draw.uniform(0.05, 1), draw.uniform(0.1, 1.5));
+  const double floor = on_box ? 0.5 : 0;
+  if (on_box)
+    text << "[[body]]\nname = \"floor\"\nshape = \"box\"\nstatic = true\nsize = [6, 1, 6]\nrotation = [0, "
+         << SceneText::number(draw.uniform(0, 90)) << ", 0]\n" << material;
+  else
+    text << "[[body]]\nname = \"floor\"\nshape = \"plane\"\nnormal = [0, 1, 0]\noffset = 0\n" << material;
+  text << "[[body]]\nname = \"box\"\nshape = \"box\"\nsize = " << SceneText::vector(size) << "\nmass = "
+       << SceneText::number(draw.uniform(0.2, 20)) << "\nposition = "
+       << SceneText::vector(Vec3(draw.uniform(-1, 1), floor + size.y() / 2 + draw.uniform(0.2, 2), draw.uniform(-1, 1)))
+       << "\nrotation = [0, " << SceneText::number(draw.uniform(0, 360)) << ", 0]\n" << material;
+  return text.str();
+}
+
+TEST(ImpactLaws, ABoxLandingFlatDoesNotTurn) {
+  check_law("flat-landing", 60, flat_landing,
+            [](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>&) {
+              const physics::Body& box = world.bodies()[1];
+              if (box.angular_velocity.norm() > 0.01) return breach_text("spin (rad/s)", box.angular_velocity.norm(), 0.01);
+              return std::string();
+            });
+}
+
 }  // namespace
 }  // namespace impulse::demos
