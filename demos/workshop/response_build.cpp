@@ -1,18 +1,21 @@
 #include "demos/workshop/response_build.h"
 
-#include "tex/child_run.h"
+#include "demos/workshop/compile_sandbox.h"
+#include "demos/workshop/include_check.h"
+#include "demos/workshop/sandbox_limits.h"
 #include "tex/tex_cache.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <regex>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -21,8 +24,6 @@ namespace fs = std::filesystem;
 namespace impulse::workshop {
 
 namespace {
-
-constexpr double kCompileSeconds = 120;  // a compiler that takes longer is stuck (or the file is)
 
 std::string read_text(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
@@ -48,28 +49,58 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-std::string compiler() {
+std::string compiler_name() {
   const char* cxx = std::getenv("CXX");
   return cxx != nullptr && *cxx != '\0' ? cxx : "c++";
 }
 
+// The compiler's path, looked up in PATH as a shell would.
+std::string compiler_path(const std::string& name) {
+  if (name.find('/') != std::string::npos) return name;
+  const char* search = std::getenv("PATH");
+  std::stringstream directories(search ? search : "/usr/bin:/bin");
+  for (std::string directory; std::getline(directories, directory, ':');)
+    if (!directory.empty() && access((directory + "/" + name).c_str(), X_OK) == 0) return directory + "/" + name;
+  return name;
+}
+
 // What identifies the compiler without running it: its resolved path, size and time.
-std::string compiler_identity(const std::string& name) {
-  std::string path = name;
-  if (name.find('/') == std::string::npos) {
-    const char* search = std::getenv("PATH");
-    std::stringstream directories(search ? search : "/usr/bin:/bin");
-    for (std::string directory; std::getline(directories, directory, ':');)
-      if (!directory.empty() && access((directory + "/" + name).c_str(), X_OK) == 0) {
-        path = directory + "/" + name;
-        break;
-      }
-  }
+std::string compiler_identity(const std::string& path) {
   std::error_code error;
   const fs::path real = fs::canonical(path, error);
   struct stat info {};
-  if (error || stat(real.c_str(), &info) != 0) return name;
+  if (error || stat(real.c_str(), &info) != 0) return path;
   return real.string() + " " + std::to_string(info.st_size) + " " + std::to_string(info.st_mtime);
+}
+
+bool is_clang(const std::string& path) {
+  std::error_code error;
+  const fs::path real = fs::canonical(path, error);
+  return (error ? fs::path(path) : real).filename().string().find("clang") != std::string::npos;
+}
+
+std::string head_of(const std::string& path, long bytes) {
+  std::ifstream file(path, std::ios::binary);
+  std::string text(size_t(bytes), '\0');
+  file.read(text.data(), bytes);
+  text.resize(size_t(file.gcount()));
+  return text;
+}
+
+// Why a compile that did not succeed failed, in words: a limit it passed, or its messages (the
+// first of them) when the file does not compile.
+std::string compile_failure(const std::string& source_path, const tex::ChildOutcome& outcome, const std::string& messages, bool cut) {
+  const auto says = [&messages](const char* text) { return messages.find(text) != std::string::npos; };
+  const std::string limit = ", which a build may not: a template that instantiates itself without end?";
+  if (outcome.timed_out)
+    return source_path + ": the compiler was still at it after " + std::to_string(int(limits::kCompileSeconds)) + " s" + limit;
+  if (outcome.signal == SIGXCPU || says("CPU time limit exceeded"))
+    return source_path + ": the compiler used more than " + std::to_string(limits::kCompileCpuSeconds) + " s of processor time" + limit;
+  if (outcome.signal == SIGXFSZ || says("File size limit exceeded"))
+    return source_path + ": the compiler wrote more than " + limits::size_words(limits::kCompileFileBytes) + limit;
+  if (says("memory exhausted") || says("out of memory") || says("Cannot allocate memory") || says("std::bad_alloc"))
+    return source_path + ": the compiler needed more than the " + limits::size_words(limits::kCompileMemoryBytes) + " of memory" + limit;
+  return source_path + " does not compile:\n" + messages + (cut ? "\n(the compiler's further messages are not shown)\n" : "");
 }
 
 // The entry point, after the student's file, in its namespace: RigidBody and AddCollisionImpulse
@@ -157,7 +188,6 @@ std::string cache_directory() {
 // under a #line of its own: a standard header cannot be included inside a namespace. The line
 // stays, empty, so that every other line keeps its number.
 std::string wrapper_source(const std::string& source_path, const std::string& text) {
-  static const std::regex hoisted(R"(^\s*#\s*include\s*(<[^>]*>|"impulse/workshop(_abi)?\.h")\s*(//.*)?$)");
   const std::string file = quoted(fs::absolute(source_path).lexically_normal().string());
   std::string includes, body;
   std::istringstream lines(text);
@@ -165,7 +195,7 @@ std::string wrapper_source(const std::string& source_path, const std::string& te
   for (std::string line; std::getline(lines, line);) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (std::regex_match(line, hoisted)) {
+    if (is_hoisted_include(line)) {
       includes += "#line " + std::to_string(number) + " " + file + "\n" + line + "\n";
       body += "\n";
     } else {
@@ -188,49 +218,56 @@ BuiltResponse build_response(const std::string& source_path) {
   if (extension != ".cpp" && extension != ".cc" && extension != ".cxx" && extension != ".c++")
     throw BuildError(source_path + ": a response is a C++ file (.cpp) defining AddCollisionImpulse, or a .so built from one by "
                                    "`impulse response FILE.cpp -o FILE.so`");
+  if (fs::is_symlink(source_path))
+    throw BuildError(source_path + ": is a symbolic link: a response file is read as it is, never through a link");
   const std::string text = read_text(source_path);
   if (text.find("AddCollisionImpulse") == std::string::npos)
     throw BuildError(source_path + ": defines no AddCollisionImpulse: write listing 1's static void AddCollisionImpulse(RigidBody& c0, "
                                    "RigidBody& c1, const Vector3& hitPoint, const Vector3& normal, float penetration)");
+  if (const std::optional<std::string> refused = refused_in_source(source_path, text)) throw BuildError(*refused);
 
-  const std::string include = include_directory();
+  const std::string include = include_directory(), compiler = compiler_path(compiler_name());
   const std::string source = wrapper_source(source_path, text);
   const std::vector<std::string> flags = {"-std=c++20", "-O2", "-fPIC", "-shared", "-fvisibility=hidden", "-ffp-contract=off",
-                                          "-I" + include, "-iquote", fs::absolute(source_path).parent_path().string()};
-  std::string identity = compiler_identity(compiler()) + "\n" + read_text(include + "/impulse/workshop.h") +
+                                          (is_clang(compiler) ? "-ferror-limit=" : "-fmax-errors=") + std::to_string(limits::kCompileErrors),
+                                          "-I" + include};
+  std::string identity = compiler_identity(compiler) + "\n" + read_text(include + "/impulse/workshop.h") +
                          read_text(include + "/impulse/workshop_abi.h") + source;
   for (const std::string& flag : flags) identity += "\n" + flag;
   const std::string directory = cache_directory();
   const std::string shared_object = directory + "/" + tex::text_hash(identity) + ".so";
   if (fs::is_regular_file(shared_object)) return {shared_object, false};
 
+  // A build directory of its own, the only place the compiler may write.
   std::error_code error;
   fs::create_directories(directory, error);
   static std::atomic<unsigned> counter{0};
-  const std::string stem = shared_object + "." + std::to_string(getpid()) + "-" + std::to_string(counter++);
-  const std::string wrapper = stem + ".cpp", temporary = stem + ".tmp", log = stem + ".log";
+  const fs::path build = fs::absolute(shared_object + "." + std::to_string(getpid()) + "-" + std::to_string(counter++) + ".d");
+  fs::remove_all(build, error);
+  if (!fs::create_directory(build, error)) throw BuildError("cannot make " + build.string() + " (set IMPULSE_RESPONSE_CACHE to a directory you can write)");
+  const std::string wrapper = (build / "response.cpp").string(), built = (build / "response.so").string(), log = (build / "compiler.log").string();
   {
     std::ofstream out(wrapper, std::ios::binary);
     out << source;
     if (!out.flush()) throw BuildError("cannot write " + wrapper + " (set IMPULSE_RESPONSE_CACHE to a directory you can write)");
   }
-  std::vector<std::string> argv = {compiler()};
-  argv.insert(argv.end(), flags.begin(), flags.end());
-  argv.insert(argv.end(), {"-o", temporary, wrapper});
-  const tex::ChildOutcome outcome = tex::run_child(argv, directory, log, kCompileSeconds);
-  std::string messages;
-  if (std::ifstream file(log); file) messages.assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
-  fs::remove(wrapper, error);
-  fs::remove(log, error);
-  if (!outcome.started) throw BuildError("cannot run the C++ compiler " + argv[0] + ": " + outcome.error + " (install g++, or set CXX)");
-  if (outcome.timed_out || outcome.exit_code != 0) {
-    fs::remove(temporary, error);
-    if (outcome.timed_out) throw BuildError(source_path + ": the compiler was still at it after " + std::to_string(int(kCompileSeconds)) + " s");
-    throw BuildError(source_path + " does not compile:\n" + messages);
-  }
+  CompileJob job;
+  job.argv = {compiler};
+  job.argv.insert(job.argv.end(), flags.begin(), flags.end());
+  job.argv.insert(job.argv.end(), {"-o", built, wrapper});
+  job.build_directory = build.string();
+  job.log_path = log;
+  job.readable = {include, fs::absolute(source_path).lexically_normal().string()};
+  const tex::ChildOutcome outcome = run_compiler(job);
+  const std::string messages = head_of(log, limits::kShownCompileBytes);
+  const bool cut = fs::file_size(log, error) > uintmax_t(messages.size());
+  if (outcome.started && !outcome.timed_out && outcome.exit_code == 0) fs::rename(built, shared_object, error);
+  const bool renamed = !error;
+  fs::remove_all(build, error);
+  if (!outcome.started) throw BuildError("cannot run the C++ compiler " + compiler + ": " + outcome.error + " (install g++, or set CXX)");
+  if (outcome.timed_out || outcome.exit_code != 0) throw BuildError(compile_failure(source_path, outcome, messages, cut));
   if (!messages.empty()) std::fputs(messages.c_str(), stderr);  // its warnings, as they are
-  fs::rename(temporary, shared_object, error);
-  if (error) throw BuildError("cannot write " + shared_object + ": " + error.message());
+  if (!renamed) throw BuildError("cannot write " + shared_object);
   return {shared_object, true};
 }
 

@@ -1,8 +1,12 @@
-// A compiled response run in a child process (impulse-respond): the engine's OutsideResponse for a
-// student's AddCollisionImpulse. Each call goes over a socket and is timed; a crash, an abort, an
-// endless loop or a NaN ends the call with physics::ResponseFailure saying which, and the child
-// is gone (every later call says the same). The child starts at the first call.
+// A compiled response run in a child process (impulse-respond) boxed in by a sandbox
+// (sandbox_child.h): the engine's OutsideResponse for a student's AddCollisionImpulse. Each call
+// goes over a socket and is timed; a crash, an abort, an endless loop, a NaN, a system call
+// graded code may not make, or printing past its limit ends the call with
+// physics::ResponseFailure saying which, and the child is gone (every later call says the same).
+// The child starts at the first call.
 #pragma once
+#include "demos/workshop/syscall_watch.h"
+#include "demos/workshop/unique_fd.h"
 #include "physics/outside_response.h"
 
 #include <sys/types.h>
@@ -26,16 +30,24 @@ class ChildResponse : public physics::OutsideResponse {
   // Starts the child and loads the shared object, if not yet done. Throws ResponseFailure.
   void start();
 
+  // Once started: the sandbox it runs in, in words ("seccomp allowlist; Landlock ABI 7; ...").
+  const std::string& sandbox() const { return sandbox_; }
+
  private:
+  void receive_sandbox();
   void receive(void* data, size_t size, bool loading);
+  bool copy_output(bool loading);  // false when the child's output is closed
   [[noreturn]] void failed(const std::string& why);
-  std::string ended_how();
+  std::string ended_how(bool loading);
   void stop();
 
   std::string shared_object_, label_;
   double time_limit_;
   pid_t pid_ = -1;
-  int socket_ = -1;
+  UniqueFd socket_, output_;  // the calls; what the child prints
+  SyscallWatch watch_;        // the calls its filter sends to us
+  long printed_ = 0;          // bytes of output so far
+  std::string sandbox_;
   std::string failure_;  // once failed, why: every later call says the same
 };
 

@@ -29,7 +29,9 @@ constexpr const char* kResponseFooter =
     "impulse compiles it after impulse/workshop.h (RigidBody, Vector3, Matrix4, Dot, Cross, Normalize,\n"
     "Transform, DBG_CHECKVECTOR, TimeStep) with $CXX or c++, keeps the result by its content's hash in\n"
     "$IMPULSE_RESPONSE_CACHE (else $XDG_CACHE_HOME/impulse/responses), and runs it in a process of its own:\n"
-    "a crash, an endless loop or a NaN ends the run with a report, never impulse.\n"
+    "a crash, an endless loop or a NaN ends the run with a report, never impulse. There it may compute and\n"
+    "print, nothing else: reading or writing files, the network, starting programs, more than 512 MiB of\n"
+    "memory are refused and reported (its sandbox: the last line of `impulse response FILE`).\n"
     "\nExamples:\n"
     "  impulse response --include-dir                     # for your editor: -I$(impulse response --include-dir)\n"
     "  impulse response mine.cpp                          # does it compile, and run?\n"
@@ -110,7 +112,16 @@ int run_response(const ResponseArguments& options) {
     part.commit();
     std::fprintf(stderr, "wrote %s\n", options.output.c_str());
   }
-  // One case, to see that it loads, returns and keeps its numbers finite.
+  // Its sandbox, then one case, to see that it loads, returns and keeps its numbers finite.
+  std::string sandbox;
+  try {
+    ChildResponse probe(built.shared_object, options.file, options.time_limit);
+    probe.start();
+    sandbox = probe.sandbox();
+  } catch (const physics::ResponseFailure& failure) {
+    std::fprintf(stderr, "impulse: %s\n", failure.what());
+    return kExitCheckFailed;
+  }
   const CaseResult trial = grade_case("head_on_unequal_e0.7", child_response_maker(built.shared_object, options.file, options.time_limit));
   if (!trial.failure.empty()) {
     std::fprintf(stderr, "impulse: %s\n  hint: %s\n", trial.failure.c_str(), trial.hint.c_str());
@@ -118,6 +129,7 @@ int run_response(const ResponseArguments& options) {
   }
   std::fprintf(stderr, "%s: runs (a head-on hit: %s); `impulse grade %s` holds it to the laws\n", options.file.c_str(),
                trial.measured.c_str(), options.file.c_str());
+  std::fprintf(stderr, "its sandbox: %s\n", sandbox.c_str());
   return 0;
 }
 
