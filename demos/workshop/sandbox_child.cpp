@@ -41,6 +41,9 @@ int enter_namespaces() {
 
 using Filter = std::unique_ptr<void, decltype(&seccomp_release)>;
 
+// Argument `index` equals `value` (libseccomp's SCMP_A0 is a C compound literal).
+scmp_arg_cmp argument_is(unsigned index, scmp_datum_t value) { return scmp_arg_cmp{index, SCMP_CMP_EQ, value, 0}; }
+
 // What computing and answering need, and nothing that reaches out of the process. The dynamic
 // loader's open of the shared object, and fstat's newfstatat, go to the listener and on from there.
 int add_allowlist(scmp_filter_ctx filter) {
@@ -56,11 +59,11 @@ int add_allowlist(scmp_filter_ctx filter) {
   for (const int call : plain)
     if (const int error = seccomp_rule_add(filter, SCMP_ACT_ALLOW, call, 0); error != 0) return error;
   const scmp_datum_t pid = scmp_datum_t(getpid());
-  if (const int error = seccomp_rule_add(filter, SCMP_ACT_ALLOW, SCMP_SYS(sendmsg), 1, SCMP_A0(SCMP_CMP_EQ, kSocketDescriptor)))
+  if (const int error = seccomp_rule_add(filter, SCMP_ACT_ALLOW, SCMP_SYS(sendmsg), 1, argument_is(0, kSocketDescriptor)))
     return error;  // handing the listener over
-  if (const int error = seccomp_rule_add(filter, SCMP_ACT_ALLOW, SCMP_SYS(tgkill), 1, SCMP_A0(SCMP_CMP_EQ, pid)))
+  if (const int error = seccomp_rule_add(filter, SCMP_ACT_ALLOW, SCMP_SYS(tgkill), 1, argument_is(0, pid)))
     return error;  // raise() and abort(), to itself
-  return seccomp_rule_add(filter, SCMP_ACT_ALLOW, SCMP_SYS(prlimit64), 1, SCMP_A2(SCMP_CMP_EQ, 0));  // reading limits only
+  return seccomp_rule_add(filter, SCMP_ACT_ALLOW, SCMP_SYS(prlimit64), 1, argument_is(2, 0));  // reading limits only
 }
 
 void failed(Sandbox& sandbox, const char* what, int error) {
