@@ -88,6 +88,22 @@ demos::Scene case_base(const std::string& title, double duration, bool gravity) 
   return scene;
 }
 
+GradeCaseSpec grade_case_spec(std::string name, std::string title, std::string law, const CaseStage& stage,
+                              std::function<void(demos::Scene&)> cast) {
+  GradeCaseSpec spec;
+  spec.name = std::move(name);
+  spec.title = std::move(title);
+  spec.law = std::move(law);
+  spec.scene = [title = spec.title, stage, cast = std::move(cast)] {
+    demos::Scene scene = case_base(title, stage.duration, stage.gravity);
+    cast(scene);
+    scene.camera.position = stage.eye;
+    scene.camera.target = stage.target;
+    return scene;
+  };
+  return spec;
+}
+
 void add_ground(demos::Scene& scene, double restitution, double friction) {
   physics::BodyDef ground;
   ground.name = "ground";

@@ -37,6 +37,19 @@ struct GradeCaseSpec {
   std::function<Verdict(const Run&)> judge;
 };
 
+// Where a case happens: case_base's world for `duration` s, with gravity or without, seen from
+// `eye` toward `target`.
+struct CaseStage {
+  double duration = 1;
+  bool gravity = false;
+  demos::Vec3f eye, target;
+};
+
+// A case: its name, title and law, and its scene (the stage, with the bodies `cast` adds); its
+// judge is the caller's to set.
+GradeCaseSpec grade_case_spec(std::string name, std::string title, std::string law, const CaseStage& stage,
+                              std::function<void(demos::Scene&)> cast);
+
 // The cases of grade_collisions.cpp and grade_contacts.cpp, in the order they run.
 std::vector<GradeCaseSpec> collision_cases();
 std::vector<GradeCaseSpec> contact_cases();

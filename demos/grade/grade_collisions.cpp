@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace impulse::workshop {
 
@@ -62,19 +63,14 @@ const char* kMomentumHint =
 // Head on along x: a (m_a) at +2 m/s, b (m_b) at -1 m/s, both spheres of 0.25 m.
 GradeCaseSpec head_on(const std::string& masses, double mass_b, double e) {
   const std::string e_text = e == 0 ? "0" : e == 1 ? "1" : format("%g", e);
-  GradeCaseSpec spec;
-  spec.name = "head_on_" + masses + "_e" + e_text;
-  spec.title = "head on, " + masses + " masses, e = " + e_text;
-  spec.law = "eq. 5 and 7: they part at e times the speed they met; momentum kept";
-  spec.scene = [=] {
-    demos::Scene scene = case_base(spec.title, 1.0, false);
+  GradeCaseSpec spec = grade_case_spec(
+    "head_on_" + masses + "_e" + e_text, "head on, " + masses + " masses, e = " + e_text,
+    "eq. 5 and 7: they part at e times the speed they met; momentum kept",
+    {1.0, false, {0.0f, 0.6f, 3.2f}, {0.0f, 0.0f, 0.0f}}, [=](demos::Scene& scene) {
     const double gap = 3.0 * kHitStep / 60 - kFirstDepth;  // closing at 3 m/s, 5 cm a step
     add_sphere(scene, "a", 0.25, 1.0, Vec3(-0.6, 0, 0), Vec3(2, 0, 0), e, 0.3);
     add_sphere(scene, "b", 0.25, mass_b, Vec3(-0.6 + 0.5 + gap, 0, 0), Vec3(-1, 0, 0), e, 0.3);
-    scene.camera.position = {0.0f, 0.6f, 3.2f};
-    scene.camera.target = {0.0f, 0.0f, 0.0f};
-    return scene;
-  };
+  });
   spec.judge = [=](const Run& run) {
     const size_t end = run.states.size() - 1;
     const double closing = 3, expected = e * closing;
@@ -118,6 +114,22 @@ Hit find_hit(const Run& run, const std::string& a, const std::string& b) {
   return hit;
 }
 
+// The pair just before and just after their hit; or nothing, and `verdict` says there was no hit
+// and gives `hint`.
+struct HitPair {
+  Hit hit;
+  const physics::Body *a0, *b0, *a1, *b1;
+};
+std::optional<HitPair> hit_pair(const Run& run, const std::string& a, const std::string& b, Verdict& verdict, const char* hint) {
+  const Hit hit = find_hit(run, a, b);
+  if (hit.before < 0 || hit.after < 0) {
+    verdict.measured = hit.before < 0 ? "they never touched" : "they never parted";
+    verdict.hint = hint;
+    return std::nullopt;
+  }
+  return HitPair{hit, &run.body(hit.before, a), &run.body(hit.before, b), &run.body(hit.after, a), &run.body(hit.after, b)};
+}
+
 // The velocity of `body`'s material point at `point` (eq. 11, with the cross product).
 Vec3 point_velocity(const physics::Body& body, const Vec3& point) {
   return body.velocity + body.angular_velocity.cross(point - body.position);
@@ -135,30 +147,19 @@ Vec3 carried(const physics::Body& before, const physics::Body& after, const Vec3
 
 // A sphere (1 kg) at 3 m/s hits a tall box (2 kg) at rest 0.45 m above its centre; e = 0.5, no friction.
 GradeCaseSpec off_centre() {
-  GradeCaseSpec spec;
-  spec.name = "off_centre_spin";
-  spec.title = "off centre: the box must spin";
-  spec.law = "eq. 11-14: the contact points part at e of their speed; momentum and angular momentum about the hit kept";
-  spec.scene = [=] {
-    demos::Scene scene = case_base(spec.title, 0.8, false);
+  GradeCaseSpec spec = grade_case_spec(
+    "off_centre_spin", "off centre: the box must spin",
+    "eq. 11-14: the contact points part at e of their speed; momentum and angular momentum about the hit kept",
+    {0.8, false, {0.0f, 0.3f, 3.4f}, {0.0f, 0.2f, 0.0f}}, [=](demos::Scene& scene) {
     add_sphere(scene, "ball", 0.2, 1.0, Vec3(-0.4 - 3.0 * kHitStep / 60 + kFirstDepth, 0.45, 0), Vec3(3, 0, 0), 0.5, 0);
     add_box(scene, "box", Vec3(0.2, 0.6, 0.2), 2.0, Vec3::Zero(), Vec3::Zero(), 0.5, 0);
-    scene.camera.position = {0.0f, 0.3f, 3.4f};
-    scene.camera.target = {0.0f, 0.2f, 0.0f};
-    return scene;
-  };
+  });
   spec.judge = [](const Run& run) {
     Verdict verdict;
-    const Hit hit = find_hit(run, "ball", "box");
-    if (hit.before < 0 || hit.after < 0) {
-      verdict.measured = hit.before < 0 ? "they never touched" : "they never parted";
-      verdict.hint = "the ball must bounce off the box: an impulse along the normal at the hit point (eq. 13)";
-      return verdict;
-    }
-    const physics::Body& ball0 = run.body(hit.before, "ball");
-    const physics::Body& box0 = run.body(hit.before, "box");
-    const physics::Body& ball1 = run.body(hit.after, "ball");
-    const physics::Body& box1 = run.body(hit.after, "box");
+    const auto pair = hit_pair(run, "ball", "box", verdict, "the ball must bounce off the box: an impulse along the normal at the hit point (eq. 13)");
+    if (!pair) return verdict;
+    const Hit& hit = pair->hit;
+    const physics::Body &ball0 = *pair->a0, &box0 = *pair->b0, &ball1 = *pair->a1, &box1 = *pair->b1;
     const Vec3& n = hit.normal;
     const double closing = -(point_velocity(ball0, hit.point) - point_velocity(box0, hit.point)).dot(n);
     // eq. 13 with 1 + e, no friction: J on the ball along n; eq. 14: the box turns by I^-1 (r x -J n).
@@ -202,37 +203,25 @@ GradeCaseSpec off_centre() {
 // A sphere (1 kg) at 2 m/s glances off one of 2 kg at rest, 30 degrees off centre; e = 0.8, mu = 0.05
 // (so little that friction cannot stop the sliding at the contact: its clamp decides).
 GradeCaseSpec oblique() {
-  GradeCaseSpec spec;
-  spec.name = "oblique";
-  spec.title = "oblique hit, mu = 0.05";
-  spec.law = "eq. 5 along the normal, and Coulomb across it: |Jt| <= mu Jn; momentum kept";
-  spec.scene = [=] {
-    demos::Scene scene = case_base(spec.title, 0.8, false);
+  GradeCaseSpec spec = grade_case_spec(
+    "oblique", "oblique hit, mu = 0.05",
+    "eq. 5 along the normal, and Coulomb across it: |Jt| <= mu Jn; momentum kept",
+    {0.8, false, {0.0f, 0.3f, 3.4f}, {0.0f, 0.1f, 0.0f}}, [=](demos::Scene& scene) {
     const double across = 0.25, centres = 0.5 - kFirstDepth;  // 1 mm deep at the start of step 10
     const double along = std::sqrt(centres * centres - across * across) + 2.0 * kHitStep / 60;
     add_sphere(scene, "a", 0.25, 1.0, Vec3(-along, across, 0), Vec3(2, 0, 0), 0.8, 0.05);
     add_sphere(scene, "b", 0.25, 2.0, Vec3::Zero(), Vec3::Zero(), 0.8, 0.05);
-    scene.camera.position = {0.0f, 0.3f, 3.4f};
-    scene.camera.target = {0.0f, 0.1f, 0.0f};
-    return scene;
-  };
+  });
   spec.judge = [](const Run& run) {
     Verdict verdict;
-    const Hit hit = find_hit(run, "a", "b");
-    if (hit.before < 0 || hit.after < 0) {
-      verdict.measured = hit.before < 0 ? "they never touched" : "they never parted";
-      verdict.hint = "the spheres must bounce apart: an impulse along the normal at the hit point (eq. 13)";
-      return verdict;
-    }
-    const physics::Body& a0 = run.body(hit.before, "a");
-    const physics::Body& b0 = run.body(hit.before, "b");
-    const physics::Body& a1 = run.body(hit.after, "a");
-    const physics::Body& b1 = run.body(hit.after, "b");
-    const Vec3& n = hit.normal;
+    const auto pair = hit_pair(run, "a", "b", verdict, "the spheres must bounce apart: an impulse along the normal at the hit point (eq. 13)");
+    if (!pair) return verdict;
+    const physics::Body &a0 = *pair->a0, &b0 = *pair->b0, &a1 = *pair->a1, &b1 = *pair->b1;
+    const Vec3& n = pair->hit.normal;
     const double closing = -(a0.velocity - b0.velocity).dot(n), parting = (a1.velocity - b1.velocity).dot(n);
     const Vec3 given = a0.mass * (a1.velocity - a0.velocity);  // the impulse on a (eq. 2)
     const double jn = given.dot(n), jt = (given - jn * n).norm(), mu = 0.05, e = 0.8;
-    const Vec3 p0 = momentum(run, hit.before), p1 = momentum(run, hit.after);
+    const Vec3 p0 = momentum(run, pair->hit.before), p1 = momentum(run, pair->hit.after);
     verdict.expected = format("part at %.2f m/s along n; |Jt| <= %.3f N s (mu Jn)", e * closing, mu * jn);
     verdict.measured = format("part at %.2f m/s along n; |Jt| = %.3f N s", parting, jt);
     const bool momentum_kept = (p1 - p0).norm() <= kMomentumShare * a0.mass * a0.velocity.norm();

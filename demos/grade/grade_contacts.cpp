@@ -30,19 +30,14 @@ const char* kHackHint =
 
 // Balls of 1 kg and 50 kg set down on the ground (e = 0.5), left to rest for 3 s.
 GradeCaseSpec ball_rest() {
-  GradeCaseSpec spec;
-  spec.name = "ball_rest";
-  spec.title = "balls of 1 kg and 50 kg resting on the ground";
-  spec.law = "at rest: no jiggle (under 1 cm/s after 1 s), no sinking (under 2 cm), whatever the mass";
-  spec.scene = [=] {
-    demos::Scene scene = case_base(spec.title, 3.0, true);
+  GradeCaseSpec spec = grade_case_spec(
+    "ball_rest", "balls of 1 kg and 50 kg resting on the ground",
+    "at rest: no jiggle (under 1 cm/s after 1 s), no sinking (under 2 cm), whatever the mass",
+    {3.0, true, {0.0f, 0.8f, 3.0f}, {0.0f, 0.2f, 0.0f}}, [=](demos::Scene& scene) {
     add_ground(scene, 0.5, 0.5);
     add_sphere(scene, "light", 0.25, 1.0, Vec3(-0.7, 0.25, 0), Vec3::Zero(), 0.5, 0.5);
     add_sphere(scene, "heavy", 0.25, 50.0, Vec3(0.7, 0.25, 0), Vec3::Zero(), 0.5, 0.5);
-    scene.camera.position = {0.0f, 0.8f, 3.0f};
-    scene.camera.target = {0.0f, 0.2f, 0.0f};
-    return scene;
-  };
+  });
   spec.judge = [](const Run& run) {
     double fastest = 0, light_depth = 0, heavy_depth = 0;
     for (size_t step = size_t(1.0 / run.dt); step < run.states.size(); ++step) {
@@ -72,22 +67,18 @@ GradeCaseSpec ball_rest() {
   return spec;
 }
 
-// A 1 kg box, 1 m a side, sliding at 3 m/s on the ground, mu = `mu` for both.
-demos::Scene slide_scene(const std::string& title, double mu) {
-  demos::Scene scene = case_base(title, 1.5, true);
+// A 1 kg box, 1 m a side, sliding at 3 m/s on the ground, mu = `mu` for both; for 1.5 s.
+const CaseStage kSlideStage{1.5, true, {0.0f, 1.5f, 5.0f}, {0.0f, 0.4f, 0.0f}};
+void add_sliding_box(demos::Scene& scene, double mu) {
   add_ground(scene, 0, mu);
   add_box(scene, "box", Vec3(0.5, 0.5, 0.5), 1.0, Vec3(-1.5, 0.5, 0), Vec3(3, 0, 0), 0, mu);
-  scene.camera.position = {0.0f, 1.5f, 5.0f};
-  scene.camera.target = {0.0f, 0.4f, 0.0f};
-  return scene;
 }
 
 GradeCaseSpec slide_friction() {
-  GradeCaseSpec spec;
-  spec.name = "slide_friction";
-  spec.title = "a box sliding to a stop, mu = 0.5";
-  spec.law = "Coulomb: it slows at mu g while it slides; from 3 m/s to 0.3 m/s in (3 - 0.3) / (mu g) s, over (3^2 - 0.3^2) / (2 mu g) m";
-  spec.scene = [=] { return slide_scene(spec.title, 0.5); };
+  GradeCaseSpec spec = grade_case_spec(
+    "slide_friction", "a box sliding to a stop, mu = 0.5",
+    "Coulomb: it slows at mu g while it slides; from 3 m/s to 0.3 m/s in (3 - 0.3) / (mu g) s, over (3^2 - 0.3^2) / (2 mu g) m",
+    kSlideStage, [](demos::Scene& scene) { add_sliding_box(scene, 0.5); });
   spec.judge = [](const Run& run) {
     const double mu = 0.5, v0 = 3, slow = 0.3;
     const double t_expected = (v0 - slow) / (mu * kG), d_expected = (v0 * v0 - slow * slow) / (2 * mu * kG);
@@ -125,11 +116,10 @@ GradeCaseSpec slide_friction() {
 }
 
 GradeCaseSpec slide_frictionless() {
-  GradeCaseSpec spec;
-  spec.name = "slide_frictionless";
-  spec.title = "a box sliding without friction, mu = 0";
-  spec.law = "no friction: it keeps its 3 m/s and stays on the ground";
-  spec.scene = [=] { return slide_scene(spec.title, 0); };
+  GradeCaseSpec spec = grade_case_spec(
+    "slide_frictionless", "a box sliding without friction, mu = 0",
+    "no friction: it keeps its 3 m/s and stays on the ground",
+    kSlideStage, [](demos::Scene& scene) { add_sliding_box(scene, 0); });
   spec.judge = [](const Run& run) {
     double slowest = 1e9, lowest = 1e9, highest = -1e9;
     for (size_t step = 0; step < run.states.size(); ++step) {
@@ -155,20 +145,15 @@ GradeCaseSpec slide_frictionless() {
 
 // Two boxes of 10 kg, 1 m a side, one on the other, left for 3 s.
 GradeCaseSpec stack() {
-  GradeCaseSpec spec;
-  spec.name = "stack";
-  spec.title = "two boxes of 10 kg stacked";
-  spec.law = "it stands: the top box stays on (within 10 cm of the bottom's centre), both upright (within 10 degrees), "
-             "neither sinks more than 5 cm into what holds it";
-  spec.scene = [=] {
-    demos::Scene scene = case_base(spec.title, 3.0, true);
+  GradeCaseSpec spec = grade_case_spec(
+    "stack", "two boxes of 10 kg stacked",
+    "it stands: the top box stays on (within 10 cm of the bottom's centre), both upright (within 10 degrees), "
+    "neither sinks more than 5 cm into what holds it",
+    {3.0, true, {0.0f, 1.6f, 5.5f}, {0.0f, 0.9f, 0.0f}}, [=](demos::Scene& scene) {
     add_ground(scene, 0, 0.5);
     add_box(scene, "bottom", Vec3(0.5, 0.5, 0.5), 10, Vec3(0, 0.5, 0), Vec3::Zero(), 0, 0.5);
     add_box(scene, "top", Vec3(0.5, 0.5, 0.5), 10, Vec3(0, 1.5, 0), Vec3::Zero(), 0, 0.5);
-    scene.camera.position = {0.0f, 1.6f, 5.5f};
-    scene.camera.target = {0.0f, 0.9f, 0.0f};
-    return scene;
-  };
+  });
   spec.judge = [](const Run& run) {
     double off = 0, leaning = 0, sunk = 0;
     for (size_t step = 0; step < run.states.size(); ++step) {
