@@ -52,11 +52,17 @@ int set_limit(int resource, rlim_t soft, rlim_t hard) {
 
 }  // namespace
 
-std::vector<std::string> toolchain_paths(const std::string& compiler) {
+std::vector<std::string> toolchain_paths(const std::string& compiler, const std::string& list) {
   static std::mutex mutex;
   static std::map<std::string, std::vector<std::string>> known;
   const std::lock_guard lock(mutex);
   if (const auto found = known.find(compiler); found != known.end()) return found->second;
+  if (std::ifstream kept(list); !list.empty() && kept) {
+    std::vector<std::string> paths;
+    for (std::string line; std::getline(kept, line);)
+      if (!line.empty()) paths.push_back(line);
+    if (!paths.empty()) return known[compiler] = paths;
+  }
   std::set<std::string> paths;
   add_existing(paths, "/usr/bin:/bin:/lib64:/etc/ld.so.cache");
   std::istringstream search(compiler_says(compiler, {"-print-search-dirs"}));
@@ -74,12 +80,21 @@ std::vector<std::string> toolchain_paths(const std::string& compiler) {
   std::error_code error;
   if (const fs::path real = fs::canonical(compiler.find('/') == std::string::npos ? "/usr/bin/" + compiler : compiler, error); !error)
     paths.insert(real.parent_path().string());
+  if (!list.empty()) {  // whole or not at all
+    const std::string part = list + "." + std::to_string(getpid()) + ".part";
+    std::ofstream(part) << [&] {
+      std::string text;
+      for (const std::string& path : paths) text += path + "\n";
+      return text;
+    }();
+    fs::rename(part, list, error);
+  }
   return known[compiler] = std::vector<std::string>(paths.begin(), paths.end());
 }
 
 tex::ChildOutcome run_compiler(const CompileJob& job) {
   LandlockRuleset ruleset;
-  for (const std::string& path : toolchain_paths(job.argv.front())) ruleset.allow_reading(path, true);
+  for (const std::string& path : toolchain_paths(job.argv.front(), job.toolchain_list)) ruleset.allow_reading(path, true);
   for (const std::string& path : job.readable) ruleset.allow_reading(path);
   ruleset.allow_reading_and_writing("/dev/null");
   ruleset.allow_everything(job.build_directory);

@@ -19,12 +19,15 @@ struct CompileJob {
   std::string build_directory;     // its own: it writes here and nowhere else (TMPDIR too)
   std::string log_path;            // its messages, in build_directory
   std::vector<std::string> readable;  // besides the toolchain's: impulse's include directory, the student's file
+  std::string toolchain_list;         // where the toolchain's paths are kept between processes (empty: not kept)
 };
 
 tex::ChildOutcome run_compiler(const CompileJob& job);
 
 // The toolchain's directories, as the compiler names them (-print-search-dirs, its #include
-// search list) with /usr/bin, /bin, /lib64 and /etc/ld.so.cache: what it may read and run.
-std::vector<std::string> toolchain_paths(const std::string& compiler);
+// search list) with /usr/bin, /bin, /lib64 and /etc/ld.so.cache: what it may read and run. Asking
+// takes two runs of the compiler (a quarter of a second): the answer is kept for the process, and
+// in `list` when given (a line a path; a class grades each file in a process of its own).
+std::vector<std::string> toolchain_paths(const std::string& compiler, const std::string& list = "");
 
 }  // namespace impulse::workshop

@@ -2,6 +2,7 @@
 
 #include "demos/response/compile_sandbox.h"
 #include "demos/response/include_check.h"
+#include "demos/response/precompiled_header.h"
 #include "demos/response/sandbox_limits.h"
 #include "tex/tex_cache.h"
 
@@ -227,10 +228,10 @@ BuiltResponse build_response(const std::string& source_path) {
   if (const std::optional<std::string> refused = refused_in_source(source_path, text)) throw BuildError(*refused);
 
   const std::string include = include_directory(), compiler = compiler_path(compiler_name());
+  const bool clang = is_clang(compiler);
   const std::string source = wrapper_source(source_path, text);
   const std::vector<std::string> flags = {"-std=c++20", "-O2", "-fPIC", "-shared", "-fvisibility=hidden", "-ffp-contract=off",
-                                          (is_clang(compiler) ? "-ferror-limit=" : "-fmax-errors=") + std::to_string(limits::kCompileErrors),
-                                          "-I" + include};
+                                          (clang ? "-ferror-limit=" : "-fmax-errors=") + std::to_string(limits::kCompileErrors)};
   std::string identity = compiler_identity(compiler) + "\n" + read_text(include + "/impulse/workshop.h") +
                          read_text(include + "/impulse/workshop_abi.h") + source;
   for (const std::string& flag : flags) identity += "\n" + flag;
@@ -252,12 +253,15 @@ BuiltResponse build_response(const std::string& source_path) {
     if (!out.flush()) throw BuildError("cannot write " + wrapper + " (set IMPULSE_RESPONSE_CACHE to a directory you can write)");
   }
   CompileJob job;
+  job.readable = {include, fs::absolute(source_path).lexically_normal().string()};
   job.argv = {compiler};
   job.argv.insert(job.argv.end(), flags.begin(), flags.end());
+  for (const std::string& flag : header_flags(compiler, compiler_identity(compiler), clang, flags, include, directory, job.readable))
+    job.argv.push_back(flag);
   job.argv.insert(job.argv.end(), {"-o", built, wrapper});
   job.build_directory = build.string();
   job.log_path = log;
-  job.readable = {include, fs::absolute(source_path).lexically_normal().string()};
+  job.toolchain_list = directory + "/toolchain-" + tex::text_hash(compiler_identity(compiler)) + ".txt";
   const tex::ChildOutcome outcome = run_compiler(job);
   const std::string messages = head_of(log, limits::kShownCompileBytes);
   const bool cut = fs::file_size(log, error) > uintmax_t(messages.size());
