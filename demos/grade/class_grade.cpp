@@ -77,6 +77,7 @@ std::vector<StudentResult> grade_class(const std::vector<Submission>& submission
     }
     results.push_back(result);
   }
+  if (!run.reports.empty()) fs::create_directories(run.reports);
   const auto began = std::chrono::steady_clock::now();
   size_t finished = 0;
   demos::run_child_jobs(
@@ -87,6 +88,7 @@ std::vector<StudentResult> grade_class(const std::vector<Submission>& submission
         if (std::optional<StudentResult> read = read_student_report(report)) {
           read->student = result.student;
           result = *read;
+          if (!run.reports.empty()) write_student_report((fs::path(run.reports) / (result.student + ".toml")).string(), result);
         } else {
           result.message = "impulse could not grade it (exit code " + std::to_string(code) + ")";
           result.details = tail_of(report + ".log");
@@ -99,6 +101,24 @@ std::vector<StudentResult> grade_class(const std::vector<Submission>& submission
       });
   std::error_code error;
   fs::remove_all(reports, error);
+  return results;
+}
+
+std::vector<StudentResult> merge_class(const std::vector<Submission>& submissions, const std::string& reports) {
+  std::vector<StudentResult> results;
+  for (const Submission& submission : submissions) {
+    StudentResult result;
+    result.student = submission.student;
+    result.file = submission.file;
+    result.message = submission.problem;
+    if (submission.problem.empty()) {
+      if (std::optional<StudentResult> read = read_student_report((fs::path(reports) / (submission.student + ".toml")).string()))
+        result = *read;
+      else
+        result.message = "not graded: no report in " + reports + " (did its shard run?)";
+    }
+    results.push_back(result);
+  }
   return results;
 }
 

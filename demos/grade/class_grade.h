@@ -25,9 +25,14 @@ struct ClassRun {
   double time_limit = 2;
   int shard = 1, shards = 1;  // every Nth submission in name order, from the Kth
   bool progress = true;       // a line on stderr as each submission ends
+  std::string reports;        // when set, each graded student's report is kept here, as STUDENT.toml
 };
 
 // Grades each submission in a child process of this program; the results in name order.
 std::vector<StudentResult> grade_class(const std::vector<Submission>& submissions, const ClassRun& run);
+
+// The results that shards kept in `reports` (ClassRun::reports), for every submission, as if one
+// run had graded them all: a submission with no report there is a row that says so.
+std::vector<StudentResult> merge_class(const std::vector<Submission>& submissions, const std::string& reports);
 
 }  // namespace impulse::workshop

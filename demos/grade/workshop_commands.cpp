@@ -56,6 +56,8 @@ constexpr const char* kGradeFooter =
     "  impulse grade mine.cpp --only head_on_equal_e0.7 --video out/grade   # out/grade/head_on_equal_e0.7.mp4\n"
     "  impulse grade mine.cpp --json > grade.json\n"
     "  impulse grade submissions/ --jobs 2 --csv grades.csv --gradescope results/ --junit grades.xml\n"
+    "  impulse grade submissions/ --shard 2/4 --reports out/reports   # a Slurm array task (docs/autograders.md)\n"
+    "  impulse grade submissions/ --merge-reports out/reports --csv grades.csv   # its last step\n"
     "\nA folder is a class: every *.cpp in it (the student is its name), or the one .cpp of each folder in it\n"
     "(the student is the folder's name), each graded in a process and a sandbox of its own, --jobs at once;\n"
     "a table of student, score and cases failed (or the first message of a file that does not compile).\n"
@@ -106,6 +108,7 @@ struct GradeArguments {
   double time_limit = kDefaultTimeLimit;
   int jobs = 1;
   std::string shard, csv, gradescope, junit;
+  std::string reports, merge_reports;  // a class in shards: each keeps its reports; a last run merges them
   std::string class_report;  // a class's child: its report here, its output beside it (class_grade.h)
 };
 
@@ -202,7 +205,10 @@ int run_class(const GradeArguments& options) {
   run.jobs = options.jobs;
   run.time_limit = options.time_limit;
   if (!options.shard.empty()) demos::read_shard(options.shard, run.shard, run.shards);
-  const std::vector<StudentResult> results = grade_class(find_submissions(options.file), run);
+  run.reports = options.reports;
+  const std::vector<Submission> submissions = find_submissions(options.file);
+  const std::vector<StudentResult> results =
+      options.merge_reports.empty() ? grade_class(submissions, run) : merge_class(submissions, options.merge_reports);
   std::fputs(class_table(options.file, results).c_str(), stdout);
   std::fflush(stdout);
   write_outputs(options, results, false);
@@ -214,7 +220,8 @@ int run_class(const GradeArguments& options) {
 int run_grade(const GradeArguments& options, bool progress) {
   if (!options.class_report.empty()) return run_class_child(options);
   if (fs::is_directory(options.file)) return run_class(options);
-  if (!options.shard.empty()) throw std::invalid_argument("--shard is for a class's folder, not one file");
+  if (!options.shard.empty() || !options.reports.empty() || !options.merge_reports.empty())
+    throw std::invalid_argument("--shard, --reports and --merge-reports are for a class's folder, not one file");
   StudentResult student;
   student.student = fs::path(options.file).stem().string();
   student.file = options.file;
@@ -271,6 +278,11 @@ void add_grade_command(Commands& commands) {
                       "Also write Gradescope's results.json: DIR/results.json for a file, DIR/STUDENT/results.json for a class")
       ->type_name("DIR");
   command->add_option("--junit", arguments->junit, "Also write JUnit XML: a test suite per student, a test per case")->type_name("FILE");
+  command->add_option("--reports", arguments->reports, "A class: keep each student's result in DIR (for --merge-reports)")
+      ->type_name("DIR");
+  command->add_option("--merge-reports", arguments->merge_reports,
+                      "A class: grade nothing; the table and outputs from the results that shards kept in DIR (--reports)")
+      ->type_name("DIR");
   command->add_option("--class-report", arguments->class_report, "")->group("");  // one submission of a class (class_grade.h)
 }
 
