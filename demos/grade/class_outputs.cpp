@@ -1,5 +1,7 @@
 #include "demos/grade/class_outputs.h"
 
+#include "demos/html_text.h"
+
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -42,21 +44,13 @@ std::string csv_field(const std::string& text) {
   return quoted + "\"";
 }
 
+// Text for XML: HTML's entities (&, <, >, "; attributes are in double quotes), and no control
+// character XML 1.0 forbids.
 std::string xml_text(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default:
-        // XML 1.0 allows no other control characters
-        if (static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t' || c == '\r') out += c;
-    }
-  }
-  return out;
+  std::string allowed;
+  for (const char c : text)
+    if (static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t' || c == '\r') allowed += c;
+  return demos::html(allowed);
 }
 
 // A case as a Gradescope test's or a JUnit failure's text.
