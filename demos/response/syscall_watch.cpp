@@ -88,7 +88,8 @@ std::optional<std::string> SyscallWatch::answer() {
     constexpr uint64_t kHarmless = O_CLOEXEC | O_LARGEFILE | O_NOCTTY | O_NONBLOCK;
     goes_on = (arguments[2] & ~kHarmless) == O_RDONLY && read_text(arguments[1]) == shared_object_;
   } else if (call.nr == kStatAt) {
-    goes_on = (arguments[3] & AT_EMPTY_PATH) != 0 && read_text(arguments[1]).empty();
+    // fstat(fd): a descriptor of its own (not AT_FDCWD, which would look at the directory it runs in)
+    goes_on = int32_t(arguments[0]) >= 0 && (arguments[3] & AT_EMPTY_PATH) != 0 && read_text(arguments[1]).empty();
   }
   std::string words;
   if (!goes_on) words = attempt_words(call.nr, arguments, [this](uint64_t address) { return read_text(address); });
