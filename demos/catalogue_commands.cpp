@@ -24,20 +24,6 @@ struct GalleryArguments {
   std::string scenes_directory = "assets/scenes", out_directory = "out";
 };
 
-// --shard K/N into the choice.
-void read_shard(const std::string& shard, CatalogueChoice& choice) {
-  const size_t slash = shard.find('/');
-  try {
-    choice.shard = std::stoi(shard.substr(0, slash));
-    choice.shards = std::stoi(shard.substr(slash + 1));
-  } catch (const std::exception&) {
-    choice.shards = 0;
-  }
-  if (slash == std::string::npos || choice.shards < 1 || choice.shards > 1000 || choice.shard < 1 ||
-      choice.shard > choice.shards)
-    throw std::invalid_argument("--shard wants K/N with 1 <= K <= N (like 2/4), got '" + shard + "'");
-}
-
 const std::string kCatalogueFooter = examples_footer(
     "  impulse catalogue -o out\n"
     "  impulse catalogue --scenes my_course/ -o videos/ --quality low\n"
@@ -58,7 +44,7 @@ void add_catalogue_command(Commands& commands) {
   CLI::App* catalogue = commands.add(
       "catalogue", "Render every scene of a directory into videos", kCatalogueFooter, [arguments](const Invocation& run) {
         CatalogueChoice choice = arguments->choice;
-        if (!arguments->shard.empty()) read_shard(arguments->shard, choice);
+        if (!arguments->shard.empty()) read_shard(arguments->shard, choice.shard, choice.shards);
         choice.child_arguments = job_arguments(run.arguments);
         return render_catalogue(arguments->scenes_directory, arguments->out_directory, run.progress, arguments->overrides,
                                 choice);

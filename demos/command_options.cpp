@@ -111,4 +111,16 @@ RenderOptions output_options(const OutputArguments& arguments, const std::string
   return options;
 }
 
+void read_shard(const std::string& text, int& shard, int& shards) {
+  const size_t slash = text.find('/');
+  try {
+    shard = std::stoi(text.substr(0, slash));
+    shards = std::stoi(text.substr(slash + 1));
+  } catch (const std::exception&) {
+    shards = 0;
+  }
+  if (slash == std::string::npos || shards < 1 || shards > 1000 || shard < 1 || shard > shards)
+    throw std::invalid_argument("--shard wants K/N with 1 <= K <= N (like 2/4), got '" + text + "'");
+}
+
 }  // namespace impulse::demos

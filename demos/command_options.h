@@ -38,4 +38,7 @@ void add_output_options(CLI::App* command, OutputArguments& arguments, const std
 // without --png, or a list that is not one.
 RenderOptions output_options(const OutputArguments& arguments, const std::string& default_path);
 
+// --shard K/N (catalogue, grade): 1 <= K <= N <= 1000. Throws std::invalid_argument otherwise.
+void read_shard(const std::string& text, int& shard, int& shards);
+
 }  // namespace impulse::demos

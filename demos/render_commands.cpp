@@ -1,7 +1,7 @@
 // `impulse render` and `impulse compare`: a scene, or two to four side by side, into a video.
 #include "demos/command.h"
 #include "demos/command_options.h"
-#include "demos/workshop/workshop_commands.h"
+#include "demos/grade/workshop_commands.h"
 
 #include <memory>
 

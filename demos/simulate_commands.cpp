@@ -1,7 +1,7 @@
 // `impulse simulate` and `impulse check`: a scene's numbers and its checks, without pictures.
 #include "demos/command.h"
 #include "demos/command_options.h"
-#include "demos/workshop/workshop_commands.h"
+#include "demos/grade/workshop_commands.h"
 #include "demos/simulate.h"
 
 #include <algorithm>

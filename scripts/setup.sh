@@ -11,6 +11,7 @@ packages=(
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # H.264 / MP4 (libx264 inside)
   libtomlplusplus-dev                             # scene files
   libcli11-dev                                    # command line
+  libseccomp-dev                                  # the sandbox of students' code (demos/response)
   libcairo2-dev fonts-dejavu-core                 # 2D overlays and their font
   libpango1.0-dev fonts-noto-core fonts-noto-color-emoji   # ... characters DejaVu lacks (emoji, rarer scripts and signs), from Noto through Pango's fallback
   texlive-latex-base dvisvgm librsvg2-dev         # typeset equations: LaTeX -> SVG (tex/), drawn by librsvg
@@ -24,6 +25,7 @@ packages=(
   clang libclang-rt-14-dev                        # tests: the libFuzzer target (tests/fuzz; clang's fuzzer and sanitizer runtimes)
   llvm                                            # tests: llvm-symbolizer, for the sanitizers' stack traces
   chromium python3                                # tests: the gallery opened in headless Chromium, served by Python's http.server
+  slurmctld slurmd slurm-client munge             # tests: the Slurm example (docs/autograders/slurm) on a one-node Slurm
 )
 
 missing=()

@@ -10,14 +10,37 @@
 #include <cstring>
 #include <thread>
 
+extern char** environ;
+
 namespace impulse::tex {
 
+namespace {
+
+// This process's environment with `changes` (NAME=VALUE) over it.
+std::vector<std::string> environment_with(const std::vector<std::string>& changes) {
+  std::vector<std::string> result;
+  for (char** entry = environ; *entry != nullptr; ++entry) {
+    const std::string text = *entry;
+    bool changed = false;
+    for (const std::string& change : changes) changed = changed || text.compare(0, change.find('=') + 1, change, 0, change.find('=') + 1) == 0;
+    if (!changed) result.push_back(text);
+  }
+  result.insert(result.end(), changes.begin(), changes.end());
+  return result;
+}
+
+}  // namespace
+
 ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& directory, const std::string& log_path,
-                       double seconds) {
+                       double seconds, const ChildOptions& options) {
   ChildOutcome outcome;
   std::vector<char*> args;
   for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
   args.push_back(nullptr);
+  std::vector<std::string> environment = environment_with(options.environment);
+  std::vector<char*> envp;
+  for (std::string& entry : environment) envp.push_back(entry.data());
+  envp.push_back(nullptr);
   // A pipe closed on exec tells the parent whether exec worked: the child writes errno into it.
   int report[2];
   if (pipe2(report, O_CLOEXEC) != 0) {
@@ -43,7 +66,13 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
     dup2(in, 0);
     dup2(out, 1);
     dup2(out, 2);
-    execvp(args[0], args.data());
+    if (options.before_exec) {
+      if (const int code = options.before_exec(); code != 0) {
+        (void)!write(report[1], &code, sizeof code);
+        _exit(127);
+      }
+    }
+    execvpe(args[0], args.data(), envp.data());
     const int code = errno;
     (void)!write(report[1], &code, sizeof code);
     _exit(127);
@@ -74,6 +103,7 @@ ChildOutcome run_child(const std::vector<std::string>& argv, const std::string& 
   }
   outcome.started = true;
   outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  outcome.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
   return outcome;
 }
 

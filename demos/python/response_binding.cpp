@@ -5,8 +5,8 @@
 // words; it never takes the interpreter down. Ctrl-C stops the run.
 #include "binding.h"
 
-#include "demos/workshop/grade.h"
-#include "demos/workshop/grade_report.h"
+#include "demos/grade/grade.h"
+#include "demos/grade/grade_report.h"
 #include "physics/outside_response.h"
 
 #include <pybind11/numpy.h>

@@ -1,7 +1,7 @@
 #include "demos/scene/scene_response.h"
 
-#include "demos/workshop/response_build.h"
-#include "demos/workshop/response_child.h"
+#include "demos/response/response_build.h"
+#include "demos/response/response_child.h"
 
 #include <atomic>
 #include <filesystem>

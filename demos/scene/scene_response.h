@@ -1,5 +1,5 @@
 // [world] response = "FILE.cpp": a student's AddCollisionImpulse in place of listing 1's page
-// (demos/workshop/). The path is the scene file's directory's, or, set from the command line
+// (demos/response/). The path is the scene file's directory's, or, set from the command line
 // (--response, --set, --vary), the current directory's. "reference" is the engine's own answer to
 // the exercise: listing 1 corrected (physics/listing_reference.h), as a correct file would do it.
 #pragma once

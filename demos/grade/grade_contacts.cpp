@@ -1,0 +1,187 @@
+// The grade's lasting contacts, under gravity: balls resting on the ground, a box sliding with and
+// without friction, two boxes stacked. What listing 1's method can be asked: one impulse per
+// contact per step in a fixed order leaves a box on four corners turning a little after each
+// pass, and friction at the corners after the first turns that into sliding, so a box that has
+// stopped creeps on at a few centimetres a second and a stack walks (ERRATA.md, "one pass per
+// contact"); the engine's own listing page does the same. The cases hold the response to the
+// laws that method can keep (Coulomb's stopping distance and time; a stack that stands, upright,
+// neither box sinking), and report the creep without counting it.
+#include "demos/grade/grade_case.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impulse::workshop {
+
+namespace {
+
+using physics::Vec3;
+
+constexpr double kG = 9.81;
+
+double tilt(const physics::Body& body) { return 2 * std::acos(std::min(1.0, std::abs(body.orientation.w()))); }
+double speed(const physics::Body& body, double reach) { return body.velocity.norm() + body.angular_velocity.norm() * reach; }
+double horizontal(const Vec3& v) { return std::hypot(v.x(), v.z()); }
+
+const char* kHackHint =
+    "the heavier body sinks deeper: line 85's hack fix, jn += 1.5 * penetration, adds a length to an impulse, so its push "
+    "does not grow with the mass it holds up. Close the depth as a speed through eq. 13's denominator instead (Baumgarte: "
+    "jn += beta / TimeStep() * (penetration - slop) / normDiv), which holds any mass alike";
+
+// Balls of 1 kg and 50 kg set down on the ground (e = 0.5), left to rest for 3 s.
+GradeCaseSpec ball_rest() {
+  GradeCaseSpec spec = grade_case_spec(
+    "ball_rest", "balls of 1 kg and 50 kg resting on the ground",
+    "at rest: no jiggle (under 1 cm/s after 1 s), no sinking (under 2 cm), whatever the mass",
+    {3.0, true, {0.0f, 0.8f, 3.0f}, {0.0f, 0.2f, 0.0f}}, [=](demos::Scene& scene) {
+    add_ground(scene, 0.5, 0.5);
+    add_sphere(scene, "light", 0.25, 1.0, Vec3(-0.7, 0.25, 0), Vec3::Zero(), 0.5, 0.5);
+    add_sphere(scene, "heavy", 0.25, 50.0, Vec3(0.7, 0.25, 0), Vec3::Zero(), 0.5, 0.5);
+  });
+  spec.judge = [](const Run& run) {
+    double fastest = 0, light_depth = 0, heavy_depth = 0;
+    for (size_t step = size_t(1.0 / run.dt); step < run.states.size(); ++step) {
+      for (const char* name : {"light", "heavy"}) fastest = std::max(fastest, speed(run.body(step, name), 0.25));
+      light_depth = std::max(light_depth, 0.25 - run.body(step, "light").position.y());
+      heavy_depth = std::max(heavy_depth, 0.25 - run.body(step, "heavy").position.y());
+    }
+    Verdict verdict;
+    verdict.expected = "under 1 cm/s; each under 2 cm deep, within 2 mm of each other";
+    verdict.measured = format("%.1f cm/s; 1 kg %.2f cm deep, 50 kg %.2f cm", 100 * fastest, 100 * light_depth, 100 * heavy_depth);
+    const bool still = fastest < 0.01, shallow = std::max(light_depth, heavy_depth) < 0.02;
+    const bool alike = std::abs(heavy_depth - light_depth) < 0.002;
+    verdict.passed = still && shallow && alike;
+    if (!alike && heavy_depth > light_depth)
+      verdict.hint = kHackHint;
+    else if (!still)
+      verdict.hint = "a resting ball jiggles: restitution applied to every tiny approach bounces it each step. Bounce only "
+                     "hits closing faster than about 0.5 m/s (ERRATA.md: restitution at resting contact)";
+    else if (!shallow)
+      verdict.hint = "they sink: gravity adds g dt of closing speed every step, and only the position correction takes it "
+                     "back; make it stronger (a larger beta), or the slop smaller";
+    else if (!alike)
+      verdict.hint = "the light ball sinks deeper than the heavy one: the position correction must go through eq. 13's "
+                     "denominator, as a speed, not as an impulse";
+    return verdict;
+  };
+  return spec;
+}
+
+// A 1 kg box, 1 m a side, sliding at 3 m/s on the ground, mu = `mu` for both; for 1.5 s.
+const CaseStage kSlideStage{1.5, true, {0.0f, 1.5f, 5.0f}, {0.0f, 0.4f, 0.0f}};
+void add_sliding_box(demos::Scene& scene, double mu) {
+  add_ground(scene, 0, mu);
+  add_box(scene, "box", Vec3(0.5, 0.5, 0.5), 1.0, Vec3(-1.5, 0.5, 0), Vec3(3, 0, 0), 0, mu);
+}
+
+GradeCaseSpec slide_friction() {
+  GradeCaseSpec spec = grade_case_spec(
+    "slide_friction", "a box sliding to a stop, mu = 0.5",
+    "Coulomb: it slows at mu g while it slides; from 3 m/s to 0.3 m/s in (3 - 0.3) / (mu g) s, over (3^2 - 0.3^2) / (2 mu g) m",
+    kSlideStage, [](demos::Scene& scene) { add_sliding_box(scene, 0.5); });
+  spec.judge = [](const Run& run) {
+    const double mu = 0.5, v0 = 3, slow = 0.3;
+    const double t_expected = (v0 - slow) / (mu * kG), d_expected = (v0 * v0 - slow * slow) / (2 * mu * kG);
+    const double x0 = run.body(0, "box").position.x();
+    Verdict verdict;
+    verdict.expected = format("down to %.1f m/s after %.3f s and %.3f m", slow, t_expected, d_expected);
+    double t = -1, d = 0;
+    for (size_t step = 1; step < run.states.size() && t < 0; ++step) {
+      const double before = horizontal(run.body(step - 1, "box").velocity), now = horizontal(run.body(step, "box").velocity);
+      if (now > slow) continue;
+      const double share = before > now ? (before - slow) / (before - now) : 1;  // where between the two steps
+      t = (step - 1 + share) * run.dt;
+      d = run.body(step - 1, "box").position.x() - x0 + share * (run.body(step, "box").position.x() - run.body(step - 1, "box").position.x());
+    }
+    double creep = 0;
+    for (size_t step = run.states.size() - size_t(0.5 / run.dt); step < run.states.size(); ++step)
+      creep = std::max(creep, horizontal(run.body(step, "box").velocity));
+    if (t < 0) {
+      verdict.measured = format("still sliding at %.2f m/s after %.1f s", horizontal(run.states.back()[1].velocity), run.dt * (run.states.size() - 1));
+      verdict.hint = "friction did not stop it: the tangent impulse (lines 102-128) with mu = c0.m_friction, up to mu jn";
+      return verdict;
+    }
+    verdict.measured = format("down to %.1f m/s after %.3f s and %.3f m; then creeps at up to %.2f m/s", slow, t, d, creep);
+    verdict.passed = std::abs(t - t_expected) <= 0.05 * t_expected && std::abs(d - d_expected) <= 0.05 * d_expected;
+    if (verdict.passed) return verdict;
+    if (d < 0.5 * d_expected)
+      verdict.hint = "it stopped almost at once: friction took all the sliding in one step. Coulomb's friction is at most mu "
+                     "times the normal impulse: clamp jt to -mu jn .. mu jn (the listing's line 119 says it does not)";
+    else
+      verdict.hint = "friction's impulse while it slides is mu jn exactly (jn this contact's normal impulse), against the "
+                     "sliding at the contact (the tangent of dv, lines 107-109)";
+    return verdict;
+  };
+  return spec;
+}
+
+GradeCaseSpec slide_frictionless() {
+  GradeCaseSpec spec = grade_case_spec(
+    "slide_frictionless", "a box sliding without friction, mu = 0",
+    "no friction: it keeps its 3 m/s and stays on the ground",
+    kSlideStage, [](demos::Scene& scene) { add_sliding_box(scene, 0); });
+  spec.judge = [](const Run& run) {
+    double slowest = 1e9, lowest = 1e9, highest = -1e9;
+    for (size_t step = 0; step < run.states.size(); ++step) {
+      const physics::Body& box = run.body(step, "box");
+      slowest = std::min(slowest, horizontal(box.velocity));
+      lowest = std::min(lowest, box.position.y());
+      highest = std::max(highest, box.position.y());
+    }
+    Verdict verdict;
+    verdict.expected = "3.00 m/s throughout; its centre 0.48-0.52 m high";
+    verdict.measured = format("%.2f m/s at the slowest; its centre %.3f-%.3f m high", slowest, lowest, highest);
+    const bool kept = slowest >= 3 * 0.99, grounded = lowest >= 0.48 && highest <= 0.52;
+    verdict.passed = kept && grounded;
+    if (!kept)
+      verdict.hint = "friction is 0 here, yet it slowed: the tangent impulse must be clamped to mu jn with mu = c0.m_friction, "
+                     "which is 0 (the listing's line 119 does not clamp)";
+    else if (!grounded)
+      verdict.hint = lowest < 0.48 ? "it sank into the ground: see the resting balls" : "it hopped: a push bigger than the sinking it corrects";
+    return verdict;
+  };
+  return spec;
+}
+
+// Two boxes of 10 kg, 1 m a side, one on the other, left for 3 s.
+GradeCaseSpec stack() {
+  GradeCaseSpec spec = grade_case_spec(
+    "stack", "two boxes of 10 kg stacked",
+    "it stands: the top box stays on (within 10 cm of the bottom's centre), both upright (within 10 degrees), "
+    "neither sinks more than 5 cm into what holds it",
+    {3.0, true, {0.0f, 1.6f, 5.5f}, {0.0f, 0.9f, 0.0f}}, [=](demos::Scene& scene) {
+    add_ground(scene, 0, 0.5);
+    add_box(scene, "bottom", Vec3(0.5, 0.5, 0.5), 10, Vec3(0, 0.5, 0), Vec3::Zero(), 0, 0.5);
+    add_box(scene, "top", Vec3(0.5, 0.5, 0.5), 10, Vec3(0, 1.5, 0), Vec3::Zero(), 0, 0.5);
+  });
+  spec.judge = [](const Run& run) {
+    double off = 0, leaning = 0, sunk = 0;
+    for (size_t step = 0; step < run.states.size(); ++step) {
+      const physics::Body& bottom = run.body(step, "bottom");
+      const physics::Body& top = run.body(step, "top");
+      off = std::max(off, horizontal(top.position - bottom.position));
+      leaning = std::max({leaning, tilt(bottom), tilt(top)});
+      sunk = std::max({sunk, 0.5 - bottom.position.y(), 1.0 - (top.position.y() - bottom.position.y())});
+    }
+    const double walked = horizontal(run.states.back()[1].position);
+    Verdict verdict;
+    verdict.expected = "top within 10 cm; upright within 10 deg; sunk under 5 cm";
+    verdict.measured = format("top %.1f cm off; leaning %.1f deg; sunk %.1f cm (the stack walked %.0f cm)", 100 * off,
+                              leaning * 180 / 3.14159265358979, 100 * sunk, 100 * walked);
+    const bool on = off <= 0.10, upright = leaning <= 10 * 3.14159265358979 / 180, held = sunk <= 0.05;
+    verdict.passed = on && upright && held;
+    if (!held)
+      verdict.hint = kHackHint;
+    else if (!on || !upright)
+      verdict.hint = "the top box slid off or toppled: a contact pushes and never pulls (jn >= 0), and friction holds it "
+                     "only up to mu jn; e applied to the small approaches of resting boxes throws them about";
+    return verdict;
+  };
+  return spec;
+}
+
+}  // namespace
+
+std::vector<GradeCaseSpec> contact_cases() { return {ball_rest(), slide_friction(), slide_frictionless(), stack()}; }
+
+}  // namespace impulse::workshop

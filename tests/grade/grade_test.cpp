@@ -1,0 +1,122 @@
+// The grade against the listings of assets/workshop and against responses that are wrong in one
+// way each (tests/response/responses/): what each passes, what each fails, and which hint it gets.
+// The engine's reference (listing 1 corrected, physics/listing_reference.h) must pass every case:
+// the cases ask nothing of a student that the method itself cannot do.
+#include "demos/grade/grade.h"
+#include "demos/response/response_build.h"
+#include "demos/response/response_child.h"
+#include "tests/support/response_files.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace impulse::workshop {
+namespace {
+
+physics::OutsideResponseMaker response_of(const std::string& path, double time_limit = kDefaultTimeLimit) {
+  return child_response_maker(build_response(path).shared_object, path, time_limit);
+}
+std::string fixture(const std::string& name) { return std::string(IMPULSE_SOURCE_DIR) + "/tests/response/responses/" + name; }
+
+std::map<std::string, CaseResult> by_name(const std::vector<CaseResult>& results) {
+  std::map<std::string, CaseResult> map;
+  for (const CaseResult& result : results) map[result.name] = result;
+  return map;
+}
+
+std::string describe(const CaseResult& r) { return r.name + ": expected " + r.expected + "; measured " + r.measured + "; " + r.hint + r.failure; }
+
+TEST(Grade, TwelveCasesInOrder) {
+  const std::vector<std::string> names = case_names();
+  ASSERT_EQ(names.size(), 12u);
+  EXPECT_EQ(names.front(), "head_on_equal_e0");
+  EXPECT_EQ(names.back(), "stack");
+}
+
+TEST(Grade, TheEnginesReferencePassesEveryCase) {
+  for (const CaseResult& result : grade({})) EXPECT_TRUE(result.passed) << describe(result);
+}
+
+// The correct solution passes every case, with the reference's very numbers (it is the same
+// algorithm, in floats).
+TEST(Grade, CorrectedListingPassesEveryCase) {
+  const std::map<std::string, CaseResult> reference = by_name(grade({}));
+  for (const CaseResult& result : grade(response_of(test::listing("listing1_corrected.cpp")))) {
+    EXPECT_TRUE(result.passed) << describe(result);
+    EXPECT_EQ(result.expected, reference.at(result.name).expected) << result.name;
+  }
+}
+
+// Listing 1 with its parentheses fixed passes the two hits at e = 0 alone: it hard-codes e = 0,
+// pushes by 1.5 x penetration (heavy bodies sink) and never clamps friction.
+TEST(Grade, ListingOnePassesOnlyTheHitsAtEZero) {
+  const std::map<std::string, CaseResult> results = by_name(grade(response_of(test::listing("listing1.cpp"))));
+  for (const auto& [name, result] : results)
+    EXPECT_EQ(result.passed, name == "head_on_equal_e0" || name == "head_on_unequal_e0") << describe(result);
+  EXPECT_NE(results.at("head_on_equal_e0.7").hint.find("line 71"), std::string::npos) << describe(results.at("head_on_equal_e0.7"));
+  EXPECT_NE(results.at("head_on_unequal_e1").hint.find("line 71"), std::string::npos);
+  EXPECT_NE(results.at("ball_rest").hint.find("hack fix"), std::string::npos) << describe(results.at("ball_rest"));
+  EXPECT_NE(results.at("stack").hint.find("hack fix"), std::string::npos) << describe(results.at("stack"));
+  EXPECT_NE(results.at("slide_friction").hint.find("clamp"), std::string::npos) << describe(results.at("slide_friction"));
+  EXPECT_NE(results.at("slide_frictionless").hint.find("clamp"), std::string::npos);
+}
+
+// Eq. 8 as printed, -(1 - e): right at e = 0, and at e = 0.7 and 1 the pair goes on closing.
+TEST(Grade, PrintedSignFailsTheBouncesWithEqEightsHint) {
+  const std::map<std::string, CaseResult> results = by_name(grade(response_of(fixture("printed_sign.cpp"))));
+  for (const char* name : {"head_on_equal_e0", "head_on_unequal_e0", "ball_rest", "slide_friction", "slide_frictionless", "stack"})
+    EXPECT_TRUE(results.at(name).passed) << describe(results.at(name));
+  for (const char* name : {"head_on_equal_e0.7", "head_on_equal_e1", "head_on_unequal_e0.7", "head_on_unequal_e1"}) {
+    EXPECT_FALSE(results.at(name).passed) << name;
+    EXPECT_NE(results.at(name).hint.find("-(1 - e)"), std::string::npos) << describe(results.at(name));
+  }
+}
+
+// Friction not clamped: the oblique hit takes more than mu Jn, the sliding box stops at once, and
+// the frictionless one too.
+TEST(Grade, UnclampedFrictionFailsCoulombsCases) {
+  const std::map<std::string, CaseResult> results = by_name(grade(response_of(fixture("no_clamp.cpp"))));
+  for (const char* name : {"oblique", "slide_friction", "slide_frictionless"}) {
+    EXPECT_FALSE(results.at(name).passed) << name;
+    EXPECT_NE(results.at(name).hint.find("clamp"), std::string::npos) << describe(results.at(name));
+  }
+  for (const char* name : {"head_on_equal_e0.7", "head_on_unequal_e1", "off_centre_spin", "ball_rest"})
+    EXPECT_TRUE(results.at(name).passed) << describe(results.at(name));
+}
+
+// A crash ends the case with the report (the signal, the step, the bodies), never the grade.
+TEST(Grade, ACrashFailsTheCaseWithItsReport) {
+  const CaseResult result = grade(response_of(fixture("crash.cpp")), "head_on_equal_e0").front();
+  EXPECT_FALSE(result.passed);
+  EXPECT_NE(result.failure.find("crash.cpp: AddCollisionImpulse"), std::string::npos) << result.failure;
+  // Crashed by SIGSEGV; under AddressSanitizer the child reports it and exits instead.
+  EXPECT_TRUE(result.failure.find("SIGSEGV") != std::string::npos || result.failure.find("exit code") != std::string::npos) << result.failure;
+  EXPECT_NE(result.failure.find("at step 11 (t = 0.1833 s), the contact of 'a' and 'b'"), std::string::npos) << result.failure;
+}
+
+TEST(Grade, AnEndlessLoopIsStoppedAtTheTimeLimit) {
+  const CaseResult result = grade(response_of(fixture("endless_loop.cpp"), 0.3), "oblique").front();
+  EXPECT_FALSE(result.passed);
+  EXPECT_NE(result.failure.find("did not return within 0.3 s"), std::string::npos) << result.failure;
+  EXPECT_NE(result.hint.find("never returned"), std::string::npos) << result.hint;
+}
+
+TEST(Grade, ANaNIsReportedWhereDbgCheckVectorFindsIt) {
+  const CaseResult result = grade(response_of(fixture("zero_tangent.cpp")), "head_on_unequal_e1").front();
+  EXPECT_FALSE(result.passed);
+  EXPECT_NE(result.failure.find("zero_tangent.cpp:10: DBG_CHECKVECTOR( c0.m_linVelocity )"), std::string::npos) << result.failure;
+  EXPECT_NE(result.hint.find("zero vector normalised"), std::string::npos) << result.hint;
+}
+
+// --only names one case exactly: "e0" is no case, and "head_on_equal_e0" is not "..._e0.7".
+TEST(Grade, OnlyTakesAnExactName) {
+  const std::vector<CaseResult> one = grade({}, "head_on_equal_e0");
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one.front().name, "head_on_equal_e0");
+  EXPECT_THROW(grade({}, "e0"), std::invalid_argument);
+  EXPECT_THROW(grade({}, "head_on_equal"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace impulse::workshop

@@ -1,0 +1,6 @@
+// Never returns.
+static void Hostile() {
+  volatile bool forever = true;
+  while (forever) {
+  }
+}
