@@ -6,7 +6,7 @@
 // film's arrows and labels) show it as they show the page's.
 //
 // How the function is run (a compiled file, in a child process with a time limit) is the
-// caller's: demos/workshop/. The physics only knows this seam.
+// caller's: demos/response/. The physics only knows this seam.
 #pragma once
 #include <array>
 #include <functional>
