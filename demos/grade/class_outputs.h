@@ -9,7 +9,7 @@
 namespace impulse::workshop {
 
 // "impulse grade FOLDER: 20 submissions, 18 compile, 9 pass every case", then a row per student:
-// its name, score (cases passed of 12) and the cases it failed, or why it was not graded.
+// its name, score (cases passed of 13) and the cases it failed, or why it was not graded.
 std::string class_table(const std::string& folder, const std::vector<StudentResult>& results);
 
 // A header, then a row per student: student, file, score, max_score, compiled, failed_cases

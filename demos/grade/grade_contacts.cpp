@@ -1,11 +1,12 @@
 // The grade's lasting contacts, under gravity: balls resting on the ground, a box sliding with and
-// without friction, two boxes stacked. What listing 1's method can be asked: one impulse per
-// contact per step in a fixed order leaves a box on four corners turning a little after each
-// pass, and friction at the corners after the first turns that into sliding, so a box that has
-// stopped creeps on at a few centimetres a second and a stack walks (ERRATA.md, "one pass per
-// contact"); the engine's own listing page does the same. The cases hold the response to the
-// laws that method can keep (Coulomb's stopping distance and time; a stack that stands, upright,
-// neither box sinking), and report the creep without counting it.
+// without friction, a ball bouncing with backspin, two boxes stacked. What listing 1's method can
+// be asked: one impulse per contact per step in a fixed order leaves a box on four corners turning
+// a little after each pass, and friction at the corners after the first turns that into sliding,
+// so a box that has stopped creeps on at a few centimetres a second and a stack walks (ERRATA.md,
+// "one pass per contact"); the engine's own listing page does the same. The cases hold the
+// response to the laws that method can keep (Coulomb's stopping distance and time; a bounce that
+// leaves rolling where mu Jn allows it; a stack that stands, upright, neither box sinking), and
+// report the creep without counting it.
 #include "demos/grade/grade_case.h"
 
 #include <algorithm>
@@ -143,6 +144,97 @@ GradeCaseSpec slide_frictionless() {
   return spec;
 }
 
+// A solid ball (1 kg, R = 0.25 m; e = 0.5, mu = 0.5, and the ground's the same) dropped onto the
+// ground, moving sideways at 2 m/s with backspin, +8 rad/s about z: its contact point slides
+// forward at vx + wz R = 4 m/s. It first overlaps the ground by 1 mm at the start of step
+// kLandingStep, meeting it at 2.94 m/s.
+constexpr int kLandingStep = 18;
+constexpr double kSpinRadius = 0.25, kSpinMass = 1, kSpinE = 0.5, kSpinMu = 0.5, kSpinVx = 2, kSpinWz = 8;
+constexpr double kSpinShare = 0.03;  // of the sideways 2 m/s: how near vx' (and wz' R) must be
+
+GradeCaseSpec bounce_spin() {
+  GradeCaseSpec spec = grade_case_spec(
+    "bounce_spin", "a ball bouncing with backspin, e = 0.5, mu = 0.5",
+    "eq. 5 and Coulomb: it bounces, Jn = (1 + e) m |vy|; friction stops its contact point's sliding (vx + wz R) if "
+    "that takes at most mu Jn, Jt = (vx + wz R) / (1/m + R^2/I), I = 2/5 m R^2, and it leaves rolling: "
+    "vx' = vx - Jt/m, wz' = -vx'/R (each within 3 % of its 2 m/s, wz' times R)",
+    {1.0, true, {0.0f, 0.7f, 3.5f}, {0.0f, 0.35f, 0.0f}}, [](demos::Scene& scene) {
+    // Velocity first, then position: at the start of step n it has fallen g dt^2 n (n + 1) / 2.
+    const double dt = scene.world.time_step, g = -scene.world.gravity.y();
+    const double drop = g * dt * dt * kLandingStep * (kLandingStep + 1) / 2;
+    add_ground(scene, kSpinE, kSpinMu);
+    add_sphere(scene, "ball", kSpinRadius, kSpinMass, Vec3(-0.9, kSpinRadius - 0.001 + drop, 0), Vec3(kSpinVx, 0, 0), kSpinE, kSpinMu);
+    scene.bodies.back().angular_velocity = Vec3(0, 0, kSpinWz);  // backspin: add_sphere sets no spin
+  });
+  spec.judge = [](const Run& run) {
+    const double R = kSpinRadius, m = kSpinMass, inertia = 0.4 * m * R * R, tolerance = kSpinShare * kSpinVx;
+    Verdict verdict;
+    const int touch = run.first_touch("ball", "ground");  // its response moves states[touch] into states[touch + 1]
+    if (touch < 0) {
+      verdict.measured = "it never touched the ground";
+      verdict.hint = "the ball fell through the ground: the listing's response only returns early for bodies moving apart";
+      return verdict;
+    }
+    // The law, from the ball as it met the ground.
+    const physics::Body& before = run.body(size_t(touch), "ball");
+    const double vx0 = before.velocity.x(), vy0 = before.velocity.y(), wz0 = before.angular_velocity.z();
+    const double slide0 = vx0 + wz0 * R;
+    const double jn = (1 + kSpinE) * m * std::abs(vy0), stop = slide0 / (1 / m + R * R / inertia);
+    const double jt = std::clamp(stop, -kSpinMu * jn, kSpinMu * jn);
+    const double vx_expected = vx0 - jt / m, wz_expected = wz0 - jt * R / inertia;
+    const bool sticks = std::abs(stop) <= kSpinMu * jn;
+    verdict.expected = format("vx' %.3f m/s, wz' %.2f rad/s, within %.2f m/s (wz' R): %s, Jt %.2f N s %s mu Jn %.2f N s",
+                              vx_expected, wz_expected, tolerance, sticks ? "it rolls" : "it slides",
+                              std::abs(stop), sticks ? "<=" : ">", kSpinMu * jn);
+    // The bounce: the first step whose vy turns from < 0 to > 0, which must be the landing's.
+    size_t bounce = 0;
+    for (size_t step = 1; step < run.states.size() && bounce == 0; ++step)
+      if (run.body(step - 1, "ball").velocity.y() < 0 && run.body(step, "ball").velocity.y() > 0) bounce = step;
+    const physics::Body& after = run.body(size_t(touch) + 1, "ball");
+    const double vx1 = after.velocity.x(), wz1 = after.angular_velocity.z(), slide1 = vx1 + wz1 * R;
+    if (bounce != size_t(touch) + 1) {
+      const double left = after.velocity.y() + kG * run.dt;  // just after its impulse, before the step's gravity
+      verdict.measured = format("no bounce: it met the ground at %.2f m/s and was at %.2f m/s after its impulse; vx' %.3f m/s, "
+                                "wz' %.2f rad/s", std::abs(vy0), left, vx1, wz1);
+      if (left < -0.25 * std::abs(vy0))
+        verdict.hint = "it kept falling into the ground after it touched: Jn is too small. With eq. 8 and 13 as printed, "
+                       "-(1 - e), the impulse is (1 - e)/(1 + e) of the one that bounces it; the listing's line 81 has -(1 + e)";
+      else if (left < 0.25 * kSpinE * std::abs(vy0))
+        verdict.hint = "it stopped dead on the ground instead of bouncing: e was 0. Use the pair's, c0.m_restitution (the "
+                       "listing hard-codes float e = 0.0f, line 71); friction's bound, mu jn, grows with the bounce's jn too";
+      else
+        verdict.hint = "it did not leave the ground in the step it landed: eq. 5, the normal speed after is -e times the speed "
+                       "before, from one impulse (1 + e) m |vy|";
+      return verdict;
+    }
+    verdict.measured = format("vx' %.3f m/s, wz' %.2f rad/s: its contact point slides at %.2f m/s after (at %.2f before); it "
+                              "rose at %.2f m/s", vx1, wz1, std::abs(slide1) < 0.005 ? 0.0 : slide1, slide0, after.velocity.y());
+    verdict.passed = std::abs(vx1 - vx_expected) <= tolerance && std::abs(wz1 - wz_expected) * R <= tolerance;
+    if (verdict.passed) return verdict;
+    const double forward = slide0 >= 0 ? 1 : -1;  // the way the contact point slid when it landed
+    if (std::abs(vx1 - vx0) <= tolerance && std::abs(wz1 - wz0) * R <= tolerance)
+      verdict.hint = "the bounce got no friction: vx and the spin are what they were. Listing 1 applies the tangent impulse "
+                     "right after the normal impulse of the same collision (lines 102-128), against the contact point's "
+                     "sliding (the tangent of dv), up to mu times this collision's jn";
+    else if (forward * slide1 < -tolerance)
+      verdict.hint = "friction more than stopped the sliding: the contact point slides backwards after the bounce. Clamp jt "
+                     "to mu jn, and to no more than the impulse that stops the contact point: -Dot(dv, tangent) / tangDiv, "
+                     "eq. 13's denominator along the tangent (its r x t terms too: 1/m + R^2/I for a ball)";
+    else if (std::abs(vx1 - vx_expected) <= tolerance)
+      verdict.hint = "vx is right but the spin is not: friction's impulse turns the ball too, r0 x (jt tangent) through the "
+                     "inverse inertia onto c0.m_angVelocity (and the opposite for c1)";
+    else if (forward * (vx0 - vx1) < forward * (vx0 - vx_expected))
+      verdict.hint = "friction stopped short: the contact point still slides after the bounce. The impulse that stops it is "
+                     "-Dot(dv, tangent) / tangDiv, with tangDiv eq. 13's denominator along the tangent (1/m + R^2/I for a "
+                     "ball); Coulomb cuts it to mu jn only where it is more";
+    else
+      verdict.hint = "friction took more than it may: at most the impulse that stops the contact point (-Dot(dv, tangent) / "
+                     "tangDiv), and at most mu jn";
+    return verdict;
+  };
+  return spec;
+}
+
 // Two boxes of 10 kg, 1 m a side, one on the other, left for 3 s.
 GradeCaseSpec stack() {
   GradeCaseSpec spec = grade_case_spec(
@@ -182,6 +274,6 @@ GradeCaseSpec stack() {
 
 }  // namespace
 
-std::vector<GradeCaseSpec> contact_cases() { return {ball_rest(), slide_friction(), slide_frictionless(), stack()}; }
+std::vector<GradeCaseSpec> contact_cases() { return {ball_rest(), slide_friction(), slide_frictionless(), bounce_spin(), stack()}; }
 
 }  // namespace impulse::workshop

@@ -8,7 +8,7 @@
 
 namespace impulse::workshop {
 
-// "impulse grade FILE: 10 of 12 cases pass", then a row per case: its name, pass or FAIL, what the
+// "impulse grade FILE: 10 of 13 cases pass", then a row per case: its name, pass or FAIL, what the
 // law expected and what was measured, and under a failure its hint (or the response's report).
 std::string grade_table(const std::string& file, const std::vector<CaseResult>& results);
 

@@ -63,7 +63,7 @@ TEST(ClassGrade, TwentySubmissionsInOneCommandWithTheirCsvGradescopeAndJunit) {
     const fs::path file = i % 4 < 2 ? folder / (student + ".cpp") : folder / student / "collision.cpp";
     fs::create_directories(file.parent_path());
     fs::copy_file(test::listing(corrected ? "listing1_corrected.cpp" : "listing1.cpp"), file);
-    expected[student] = {corrected ? 12 : 2, true};
+    expected[student] = {corrected ? 13 : 2, true};
   }
   fs::copy_file(test::listing("listing1_printed.cpp"), folder / "not_compiling.cpp");
   expected["not_compiling"] = {0, false};
@@ -83,7 +83,7 @@ TEST(ClassGrade, TwentySubmissionsInOneCommandWithTheirCsvGradescopeAndJunit) {
   EXPECT_EQ(result.exit_code, 2) << result.describe();  // some failed
   const std::string table = test::read(out.string());
   EXPECT_NE(table.find("21 submissions, 19 compile, 9 pass every case"), std::string::npos) << table;
-  EXPECT_NE(table.find("not_compiling   0/12  does not compile: " + (folder / "not_compiling.cpp").string() + ":77:"), std::string::npos) << table;
+  EXPECT_NE(table.find("not_compiling   0/13  does not compile: " + (folder / "not_compiling.cpp").string() + ":77:"), std::string::npos) << table;
   EXPECT_NE(table.find("every case (AddCollisionImpulse tried to open a file ('/etc/passwd'), which graded code may not do)"), std::string::npos)
       << table;
   EXPECT_EQ(table.find("root:x:0:0"), std::string::npos) << table;
@@ -104,11 +104,11 @@ TEST(ClassGrade, TwentySubmissionsInOneCommandWithTheirCsvGradescopeAndJunit) {
     const std::vector<std::string>& row = rows[student];
     ASSERT_EQ(row.size(), header.size()) << student;
     EXPECT_EQ(row[2], std::to_string(want.score)) << student;
-    EXPECT_EQ(row[3], "12") << student;
+    EXPECT_EQ(row[3], "13") << student;
     EXPECT_EQ(row[4], want.compiled ? "1" : "0") << student;
   }
   EXPECT_EQ(rows["printed_0"][5], "head_on_equal_e0.7;head_on_equal_e1;head_on_unequal_e0.7;head_on_unequal_e1;off_centre_spin;oblique;"
-                                  "ball_rest;slide_friction;slide_frictionless;stack");
+                                  "ball_rest;slide_friction;slide_frictionless;bounce_spin;stack");
   EXPECT_EQ(rows["printed_1"][1], (folder / "printed_1" / "collision.cpp").string());
   EXPECT_NE(rows["not_compiling"][6].find("error:"), std::string::npos) << rows["not_compiling"][6];
   EXPECT_EQ(rows["empty_folder"][6], "no .cpp file in the folder");
@@ -120,7 +120,7 @@ TEST(ClassGrade, TwentySubmissionsInOneCommandWithTheirCsvGradescopeAndJunit) {
     ASSERT_TRUE(fs::exists(path)) << path;
     const nlohmann::json results = nlohmann::json::parse(test::read(path.string()));
     EXPECT_EQ(results["score"].get<double>(), double(want.score)) << student;
-    ASSERT_EQ(results["tests"].size(), want.compiled ? 12u : 0u) << student;
+    ASSERT_EQ(results["tests"].size(), want.compiled ? 13u : 0u) << student;
     int passed = 0;
     for (const auto& test : results["tests"]) {
       EXPECT_EQ(test["max_score"].get<double>(), 1.0);
@@ -135,13 +135,13 @@ TEST(ClassGrade, TwentySubmissionsInOneCommandWithTheirCsvGradescopeAndJunit) {
   const nlohmann::json broken = nlohmann::json::parse(test::read((dir / "gradescope/not_compiling/results.json").string()));
   EXPECT_NE(broken["output"].get<std::string>().find("not_compiling.cpp:77:"), std::string::npos) << broken.dump(2);
 
-  // JUnit: a suite per student, "compile" and the twelve cases in each graded one.
+  // JUnit: a suite per student, "compile" and the thirteen cases in each graded one.
   const std::string xml = test::read((dir / "grades.xml").string());
   EXPECT_EQ(count(xml, "<testsuite name="), expected.size());
-  EXPECT_EQ(count(xml, "<testcase "), expected.size() + 19 * 12u);
-  // failures: 9 printed x 10, the hostile's 12, and two that were not graded
-  EXPECT_EQ(count(xml, "<failure "), 9 * 10 + 12 + 2u);
-  EXPECT_NE(xml.find("<testsuites name=\"impulse grade " + folder.string() + "\" tests=\"249\" failures=\"104\">"), std::string::npos)
+  EXPECT_EQ(count(xml, "<testcase "), expected.size() + 19 * 13u);
+  // failures: 9 printed x 11, the hostile's 13, and two that were not graded
+  EXPECT_EQ(count(xml, "<failure "), 9 * 11 + 13 + 2u);
+  EXPECT_NE(xml.find("<testsuites name=\"impulse grade " + folder.string() + "\" tests=\"268\" failures=\"114\">"), std::string::npos)
       << xml.substr(0, 300);
   EXPECT_NE(xml.find("tried to open a file ('/etc/passwd')"), std::string::npos);
 }

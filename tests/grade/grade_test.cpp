@@ -27,9 +27,9 @@ std::map<std::string, CaseResult> by_name(const std::vector<CaseResult>& results
 
 std::string describe(const CaseResult& r) { return r.name + ": expected " + r.expected + "; measured " + r.measured + "; " + r.hint + r.failure; }
 
-TEST(Grade, TwelveCasesInOrder) {
+TEST(Grade, ThirteenCasesInOrder) {
   const std::vector<std::string> names = case_names();
-  ASSERT_EQ(names.size(), 12u);
+  ASSERT_EQ(names.size(), 13u);
   EXPECT_EQ(names.front(), "head_on_equal_e0");
   EXPECT_EQ(names.back(), "stack");
 }
@@ -49,7 +49,8 @@ TEST(Grade, CorrectedListingPassesEveryCase) {
 }
 
 // Listing 1 with its parentheses fixed passes the two hits at e = 0 alone: it hard-codes e = 0,
-// pushes by 1.5 x penetration (heavy bodies sink) and never clamps friction.
+// pushes by 1.5 x penetration (heavy bodies sink) and never clamps friction. Its friction is right
+// where it sticks, but the ball with backspin does not bounce (e = 0), and is told so.
 TEST(Grade, ListingOnePassesOnlyTheHitsAtEZero) {
   const std::map<std::string, CaseResult> results = by_name(grade(response_of(test::listing("listing1.cpp"))));
   for (const auto& [name, result] : results)
@@ -60,28 +61,41 @@ TEST(Grade, ListingOnePassesOnlyTheHitsAtEZero) {
   EXPECT_NE(results.at("stack").hint.find("hack fix"), std::string::npos) << describe(results.at("stack"));
   EXPECT_NE(results.at("slide_friction").hint.find("clamp"), std::string::npos) << describe(results.at("slide_friction"));
   EXPECT_NE(results.at("slide_frictionless").hint.find("clamp"), std::string::npos);
+  EXPECT_NE(results.at("bounce_spin").measured.find("no bounce"), std::string::npos) << describe(results.at("bounce_spin"));
+  EXPECT_NE(results.at("bounce_spin").hint.find("line 71"), std::string::npos) << describe(results.at("bounce_spin"));
 }
 
-// Eq. 8 as printed, -(1 - e): right at e = 0, and at e = 0.7 and 1 the pair goes on closing.
+// The ball with backspin leaves rolling, the contact point's sliding stopped (it takes less than
+// mu Jn), as the corrected listing and the reference have it; the law's numbers are Coulomb's.
+TEST(Grade, CorrectedListingLeavesTheSpinningBallRolling) {
+  const CaseResult result = grade(response_of(test::listing("listing1_corrected.cpp")), "bounce_spin").front();
+  EXPECT_TRUE(result.passed) << describe(result);
+  EXPECT_NE(result.expected.find("vx' 0.857 m/s, wz' -3.43 rad/s"), std::string::npos) << describe(result);
+  EXPECT_NE(result.expected.find("it rolls, Jt 1.14 N s <= mu Jn 2.21 N s"), std::string::npos) << describe(result);
+}
+
+// Eq. 8 as printed, -(1 - e): right at e = 0, and at e = 0.7 and 1 the pair goes on closing (and
+// the ball with backspin goes on falling into the ground).
 TEST(Grade, PrintedSignFailsTheBouncesWithEqEightsHint) {
   const std::map<std::string, CaseResult> results = by_name(grade(response_of(fixture("printed_sign.cpp"))));
   for (const char* name : {"head_on_equal_e0", "head_on_unequal_e0", "ball_rest", "slide_friction", "slide_frictionless", "stack"})
     EXPECT_TRUE(results.at(name).passed) << describe(results.at(name));
-  for (const char* name : {"head_on_equal_e0.7", "head_on_equal_e1", "head_on_unequal_e0.7", "head_on_unequal_e1"}) {
+  for (const char* name : {"head_on_equal_e0.7", "head_on_equal_e1", "head_on_unequal_e0.7", "head_on_unequal_e1", "bounce_spin"}) {
     EXPECT_FALSE(results.at(name).passed) << name;
     EXPECT_NE(results.at(name).hint.find("-(1 - e)"), std::string::npos) << describe(results.at(name));
   }
 }
 
 // Friction not clamped: the oblique hit takes more than mu Jn, the sliding box stops at once, and
-// the frictionless one too.
+// the frictionless one too. The ball with backspin passes: stopping its contact point takes less
+// than mu Jn, so the clamp does not bind.
 TEST(Grade, UnclampedFrictionFailsCoulombsCases) {
   const std::map<std::string, CaseResult> results = by_name(grade(response_of(fixture("no_clamp.cpp"))));
   for (const char* name : {"oblique", "slide_friction", "slide_frictionless"}) {
     EXPECT_FALSE(results.at(name).passed) << name;
     EXPECT_NE(results.at(name).hint.find("clamp"), std::string::npos) << describe(results.at(name));
   }
-  for (const char* name : {"head_on_equal_e0.7", "head_on_unequal_e1", "off_centre_spin", "ball_rest"})
+  for (const char* name : {"head_on_equal_e0.7", "head_on_unequal_e1", "off_centre_spin", "ball_rest", "bounce_spin"})
     EXPECT_TRUE(results.at(name).passed) << describe(results.at(name));
 }
 
