@@ -5,6 +5,26 @@
 
 namespace impulse::demos {
 
+namespace {
+
+// TOML reads \t, \r, \n, \f and \b in double quotes as escapes: tex = "\theta" arrives as a tab
+// and "heta", "\frac" as a form feed and "rac". LaTeX needs none of those characters; single
+// quotes keep every backslash.
+void check_latex_quotes(TableReader& r, std::string_view key, const std::string& tex) {
+  const toml::node* node = r.get(key);
+  const char quotes = r.quotes(node);
+  if (quotes == '\'') return;
+  for (const char c : tex) {
+    const char* escape = c == '\t' ? "\\t" : c == '\r' ? "\\r" : c == '\f' ? "\\f" : c == '\b' ? "\\b"
+                       : c == '\n' && quotes == '"' ? "\\n" : nullptr;
+    if (escape)
+      r.fail(node, key, std::string("TOML read ") + escape + " in double quotes as a control character (tex = \"\\theta\" becomes a tab "
+                        "and 'heta'): write LaTeX in single quotes, tex = '\\theta'");
+  }
+}
+
+}  // namespace
+
 void read_equations(TableReader& top, Scene& scene) {
   const toml::array* equations = top.table_list("equation");
   if (!equations) return;
@@ -16,6 +36,7 @@ void read_equations(TableReader& top, Scene& scene) {
     cue.tex = r.string("tex", "");
     if (cue.tex.find_first_not_of(" \t\r\n") == std::string::npos)
       r.fail(r.get("tex"), "tex", "missing: LaTeX mathematics in single quotes, like tex = 'J = \\frac{1}{2}'");
+    check_latex_quotes(r, "tex", cue.tex);
     cue.origin = r.where(r.get("tex"), "tex");
     cue.live = has_live_values(cue.tex);
     if (cue.live && !(scene.playback.slow_motion_impulse > 0))

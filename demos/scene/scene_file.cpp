@@ -45,6 +45,8 @@ SceneFile::SceneFile(std::string path) : path_(std::move(path)) {
     std::ostringstream message;
     message << path_ << ':' << error.source().begin.line << ": " << error.description();
     if (error.description().find("utf-8") != std::string_view::npos) message << " (save the file as UTF-8)";
+    if (error.description().find("escape sequence") != std::string_view::npos)
+      message << " (in double quotes a backslash starts an escape: write LaTeX in single quotes, tex = '\\alpha')";
     throw SceneError(message.str(), ScenePlace{path_, int(error.source().begin.line), "", "", ""});
   }
 }

@@ -1,5 +1,7 @@
 #include "demos/scene/table_reader.h"
 
+#include <fstream>
+
 #include "demos/scene/scene_error.h"
 
 #include <algorithm>
@@ -51,6 +53,21 @@ ScenePlace TableReader::place(const toml::node* node, std::string_view key) cons
     place.line = 0;
   }
   return place;
+}
+
+char TableReader::quotes(const toml::node* node) const {
+  if (!node || set_by(node)) return 0;
+  const toml::source_position begin = shown(node).source().begin;
+  if (begin.line == 0 || begin.column == 0) return 0;
+  std::ifstream in(file_);
+  std::string line;
+  for (toml::source_index i = 0; i < begin.line; ++i)
+    if (!std::getline(in, line)) return 0;
+  const size_t at = begin.column - 1;
+  if (at >= line.size()) return 0;
+  if (line[at] == '\'') return '\'';
+  if (line[at] != '"') return 0;
+  return line.compare(at, 3, "\"\"\"") == 0 ? 'B' : '"';
 }
 
 std::string TableReader::where(const toml::node* node, std::string_view key) const {

@@ -45,6 +45,9 @@ class TableReader {
   std::string where(const toml::node* node, std::string_view key) const;
   // The same in parts (scene_error.h).
   ScenePlace place(const toml::node* node, std::string_view key) const;
+  // How the file quoted the string `node`: '"' (basic, one line), 'B' (basic, multi-line), '\''
+  // (literal, one or more lines), or 0 when it has no line of the file (--set, a dict).
+  char quotes(const toml::node* node) const;
 
   const toml::node* get(std::string_view key);  // marks the key as known; null when absent
   bool has(std::string_view key) const { return table_.contains(key); }  // without marking it
