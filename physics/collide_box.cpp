@@ -45,16 +45,25 @@ int collide_sphere_box(const Body& a, int ia, const Body& b, int ib, Real margin
   return 1;
 }
 
-// A box (A) against a plane (B): each corner below the plane plus the margin, at most four.
+// A box (A) against a plane (B): each corner of the box's face that looks most against the plane
+// (the incident face, as a box against a reference face is clipped) below the plane plus the
+// margin. The lowest corner is always one of them. All eight, reduced to four by area, would mix
+// the corners of a thin box's two faces as it lies nearly flat: a domino slapping down would keep
+// its top face's far corners and leave a bottom corner untracked, to be found deep in the ground.
 int collide_box_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
   const Mat3 rotation = a.orientation.toRotationMatrix();
   const Vec3& n = b.shape.normal;
+  const Vec3 local_n = rotation.transpose() * n;
   // Cheap rejection: the box's lowest reach along n.
-  const Real reach = (rotation.transpose() * n).cwiseAbs().dot(a.shape.half_extents);
+  const Real reach = local_n.cwiseAbs().dot(a.shape.half_extents);
   if (n.dot(a.position) - b.shape.offset - reach > margin) return 0;
+  int axis = 0;
+  local_n.cwiseAbs().maxCoeff(&axis);
+  const int face_bit = local_n[axis] > 0 ? 0 : 1 << axis;  // the corners whose `axis` side is against n
 
   const size_t first = out.size();
   for (int i = 0; i < 8; ++i) {
+    if ((i & (1 << axis)) != face_bit) continue;
     const Vec3 corner = a.position + rotation * box_corner(a.shape.half_extents, i);
     const Real separation = n.dot(corner) - b.shape.offset;
     if (separation > margin) continue;

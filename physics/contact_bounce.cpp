@@ -48,7 +48,7 @@ Vec3 across(const Vec3& tangent, const Vec3& normal) { return (tangent - tangent
 
 // A manifold in lane l of its block (one that can bounce is alone, in lane 0: contact_prepare.cpp).
 bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) {
-  const auto [index, l] = lane_of_place_[place];
+  const int index = lane_of_place_[place].block, l = lane_of_place_[place].lane;  // l is captured: no structured binding
   ManifoldLanes& block = lanes_[index];
   PointLanes* rows = &lane_points_[block.first_point];
   // A pair pressing nowhere in this sub-step may be landing: slower than the threshold, an impact
