@@ -1,6 +1,8 @@
 #include "demos/grade/class_grade.h"
 
 #include "demos/child_jobs.h"
+#include "demos/response/response_build.h"
+#include "tex/tex_cache.h"
 
 #include <unistd.h>
 
@@ -26,7 +28,24 @@ std::string tail_of(const fs::path& log) {
   return text.size() > 2000 ? text.substr(text.size() - 2000) : text;
 }
 
+std::string read_bytes(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+}
+
+// What a result was graded from: the submission's text, this program (its own bytes: another build
+// may judge otherwise) and the time limit. Empty when the file cannot be read.
+std::string graded_from(const Submission& submission, double time_limit) {
+  static const std::string program = tex::text_hash(read_bytes("/proc/self/exe"));
+  std::ifstream file(submission.file, std::ios::binary);
+  if (!file) return "";
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  return tex::text_hash(program + "\n" + std::to_string(time_limit) + "\n" + text);
+}
+
 }  // namespace
+
+std::string kept_results_directory() { return cache_directory() + "/grades"; }
 
 std::vector<Submission> find_submissions(const std::string& folder) {
   if (!fs::is_directory(folder)) throw std::invalid_argument(folder + ": no such folder");
@@ -60,7 +79,13 @@ std::vector<Submission> find_submissions(const std::string& folder) {
 std::vector<StudentResult> grade_class(const std::vector<Submission>& submissions, const ClassRun& run) {
   std::vector<StudentResult> results;
   std::vector<size_t> graded;  // the submissions given a process, by their result's index
+  std::vector<std::string> keys;  // what each was graded from (graded_from), by job
   std::vector<std::vector<std::string>> jobs;
+  size_t unchanged = 0;
+  if (!run.kept.empty()) {
+    std::error_code made;
+    fs::create_directories(run.kept, made);
+  }
   const fs::path reports = fs::temp_directory_path() / ("impulse-grade-" + std::to_string(getpid()));
   fs::create_directories(reports);
   for (size_t i = 0; i < submissions.size(); ++i) {
@@ -71,12 +96,29 @@ std::vector<StudentResult> grade_class(const std::vector<Submission>& submission
     result.file = submission.file;
     result.message = submission.problem;
     if (submission.problem.empty()) {
-      graded.push_back(results.size());
-      const std::string report = (reports / (std::to_string(jobs.size()) + ".toml")).string();
-      jobs.push_back({"grade", submission.file, "--time-limit", std::to_string(run.time_limit), "--class-report", report});
+      const std::string key = run.kept.empty() ? "" : graded_from(submission, run.time_limit);
+      std::optional<StudentResult> earlier;
+      if (!key.empty()) earlier = read_student_report((fs::path(run.kept) / (key + ".toml")).string());
+      if (earlier) {
+        earlier->student = result.student;
+        earlier->file = result.file;
+        result = *earlier;
+        ++unchanged;
+        if (!run.reports.empty()) {
+          fs::create_directories(run.reports);
+          write_student_report((fs::path(run.reports) / (result.student + ".toml")).string(), result);
+        }
+      } else {
+        graded.push_back(results.size());
+        keys.push_back(key);
+        const std::string report = (reports / (std::to_string(jobs.size()) + ".toml")).string();
+        jobs.push_back({"grade", submission.file, "--time-limit", std::to_string(run.time_limit), "--class-report", report});
+      }
     }
     results.push_back(result);
   }
+  if (run.progress && unchanged > 0)
+    std::fprintf(stderr, "%zu unchanged since they were graded: their results kept (--regrade grades them again)\n", unchanged);
   if (!run.reports.empty()) fs::create_directories(run.reports);
   const auto began = std::chrono::steady_clock::now();
   size_t finished = 0;
@@ -89,6 +131,10 @@ std::vector<StudentResult> grade_class(const std::vector<Submission>& submission
           read->student = result.student;
           result = *read;
           if (!run.reports.empty()) write_student_report((fs::path(run.reports) / (result.student + ".toml")).string(), result);
+          if (!keys[job].empty()) try {  // kept for a re-run; one that cannot be kept is graded again then
+              write_student_report((fs::path(run.kept) / (keys[job] + ".toml")).string(), result);
+            } catch (const std::exception&) {
+            }
         } else {
           result.message = "impulse could not grade it (exit code " + std::to_string(code) + ")";
           result.details = tail_of(report + ".log");

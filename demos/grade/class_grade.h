@@ -26,7 +26,15 @@ struct ClassRun {
   int shard = 1, shards = 1;  // every Nth submission in name order, from the Kth
   bool progress = true;       // a line on stderr as each submission ends
   std::string reports;        // when set, each graded student's report is kept here, as STUDENT.toml
+  // When set, each result is also kept here by what it was graded from (the file's text, this
+  // program, the time limit), and a submission graded so before is not graded again: a re-run
+  // grades only what changed.
+  std::string kept;
 };
+
+// The folder where `impulse grade FOLDER` keeps its results (ClassRun::kept): beside the
+// compiled responses' cache (response_build.h).
+std::string kept_results_directory();
 
 // Grades each submission in a child process of this program; the results in name order.
 std::vector<StudentResult> grade_class(const std::vector<Submission>& submissions, const ClassRun& run);

@@ -109,6 +109,7 @@ struct GradeArguments {
   int jobs = 1;
   std::string shard, csv, gradescope, junit;
   std::string reports, merge_reports;  // a class in shards: each keeps its reports; a last run merges them
+  bool regrade = false;  // a class: grade every submission, also those graded before unchanged
   std::string class_report;  // a class's child: its report here, its output beside it (class_grade.h)
 };
 
@@ -206,6 +207,7 @@ int run_class(const GradeArguments& options) {
   run.time_limit = options.time_limit;
   if (!options.shard.empty()) demos::read_shard(options.shard, run.shard, run.shards);
   run.reports = options.reports;
+  if (!options.regrade) run.kept = kept_results_directory();
   const std::vector<Submission> submissions = find_submissions(options.file);
   const std::vector<StudentResult> results =
       options.merge_reports.empty() ? grade_class(submissions, run) : merge_class(submissions, options.merge_reports);
@@ -280,6 +282,9 @@ void add_grade_command(Commands& commands) {
   command->add_option("--junit", arguments->junit, "Also write JUnit XML: a test suite per student, a test per case")->type_name("FILE");
   command->add_option("--reports", arguments->reports, "A class: keep each student's result in DIR (for --merge-reports)")
       ->type_name("DIR");
+  command->add_flag("--regrade", arguments->regrade,
+                    "A class: grade every submission again, also those unchanged since they were graded (their results are kept by "
+                    "the file's text, this program and the time limit)");
   command->add_option("--merge-reports", arguments->merge_reports,
                       "A class: grade nothing; the table and outputs from the results that shards kept in DIR (--reports)")
       ->type_name("DIR");

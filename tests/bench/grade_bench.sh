@@ -6,6 +6,7 @@
 # (the same files again: nothing compiled). Videos are never made by a class's grade. Prints:
 #   submissions jobs cold_s cold_s_per_submission warm_s warm_s_per_submission compile_s_per_submission
 # compile_s_per_submission is (cold - warm) x jobs / N: a file's compile, on one core.
+# Both runs pass --regrade: without it the warm run would reuse every kept result and run no case.
 # Usage: tests/bench/grade_bench.sh build/demos/impulse [N [JOBS]]     (--smoke: 4 submissions)
 set -euo pipefail
 impulse=$(realpath "$1"); count=${2:-200}; jobs=${3:-2}
@@ -25,7 +26,7 @@ done
 export IMPULSE_RESPONSE_CACHE=$work/cache
 run() {
   local start=$EPOCHREALTIME
-  "$impulse" grade "$work/submissions" --jobs "$jobs" --csv "$work/grades.csv" > "$work/table.txt" 2> "$work/progress.txt" || true
+  "$impulse" grade "$work/submissions" --jobs "$jobs" --regrade --csv "$work/grades.csv" > "$work/table.txt" 2> "$work/progress.txt" || true
   awk -v a="$start" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.2f", b - a }'
 }
 cold=$(run)

@@ -76,7 +76,7 @@ TEST(ClassGrade, TwentySubmissionsInOneCommandWithTheirCsvGradescopeAndJunit) {
   std::ofstream(folder / "README.txt") << "not a submission\n";
 
   const fs::path out = dir / "table.txt";
-  const std::string command = "exec '" + std::string(IMPULSE_PROGRAM) + "' grade '" + folder.string() + "' --jobs 2 --csv '" +
+  const std::string command = "exec '" + std::string(IMPULSE_PROGRAM) + "' grade '" + folder.string() + "' --jobs 2 --regrade --csv '" +
                               (dir / "grades.csv").string() + "' --gradescope '" + (dir / "gradescope").string() + "' --junit '" +
                               (dir / "grades.xml").string() + "' > '" + out.string() + "'";
   const auto result = ::impulse::testing::run_child({"/bin/sh", "-c", command});
@@ -144,6 +144,41 @@ TEST(ClassGrade, TwentySubmissionsInOneCommandWithTheirCsvGradescopeAndJunit) {
   EXPECT_NE(xml.find("<testsuites name=\"impulse grade " + folder.string() + "\" tests=\"268\" failures=\"114\">"), std::string::npos)
       << xml.substr(0, 300);
   EXPECT_NE(xml.find("tried to open a file ('/etc/passwd')"), std::string::npos);
+}
+
+// A re-run grades only what changed: each result is kept by the file's text, the program and the
+// time limit; --regrade grades everything again. The table is the same each time.
+TEST(ClassGrade, ARerunGradesOnlyWhatChanged) {
+  const fs::path dir = fs::path(IMPULSE_TEST_SCRATCH) / "class_rerun";
+  fs::remove_all(dir);
+  const fs::path folder = dir / "submissions";
+  fs::create_directories(folder);
+  fs::copy_file(test::listing("listing1_corrected.cpp"), folder / "ada.cpp");
+  fs::copy_file(test::listing("listing1.cpp"), folder / "bo.cpp");
+  auto grade = [&](const std::string& extra) {
+    const std::string command = "IMPULSE_RESPONSE_CACHE='" + (dir / "cache").string() + "' exec '" + std::string(IMPULSE_PROGRAM) +
+                                "' grade '" + folder.string() + "' --jobs 2" + extra + " > '" + (dir / "table.txt").string() + "' 2> '" +
+                                (dir / "progress.txt").string() + "'";
+    const auto result = ::impulse::testing::run_child({"/bin/sh", "-c", command});
+    EXPECT_EQ(result.exit_code, 2) << result.describe();  // bo fails cases
+    return std::pair{test::read((dir / "table.txt").string()), test::read((dir / "progress.txt").string())};
+  };
+  const auto [first_table, first] = grade("");
+  EXPECT_NE(first.find("[2/2]"), std::string::npos) << first;
+  EXPECT_EQ(first.find("unchanged"), std::string::npos) << first;
+  const auto [second_table, second] = grade("");
+  EXPECT_NE(second.find("2 unchanged since they were graded"), std::string::npos) << second;
+  EXPECT_EQ(second.find("[1/"), std::string::npos) << second;
+  EXPECT_EQ(second_table, first_table);
+  std::ofstream(folder / "bo.cpp", std::ios::app) << "// a comment: another text, graded again\n";
+  const auto [third_table, third] = grade("");
+  EXPECT_NE(third.find("1 unchanged since they were graded"), std::string::npos) << third;
+  EXPECT_NE(third.find("[1/1] bo: 2 of 13 cases"), std::string::npos) << third;
+  EXPECT_EQ(third_table, first_table);
+  const auto [fourth_table, fourth] = grade(" --regrade");
+  EXPECT_NE(fourth.find("[2/2]"), std::string::npos) << fourth;
+  EXPECT_EQ(fourth.find("unchanged"), std::string::npos) << fourth;
+  EXPECT_EQ(fourth_table, first_table);
 }
 
 }  // namespace
