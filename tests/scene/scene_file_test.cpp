@@ -89,6 +89,23 @@ Scene scene_of(const std::string& text, const std::vector<std::string>& settings
 
 // `rotation` is degrees about x, then y, then z, each about the world axis, right-handed: a
 // positive angle turns counter-clockwise seen from the axis's tip, looking toward the origin.
+// TOML reads \t, \f, \r, \n and \b in double quotes as escapes: LaTeX so written is refused with
+// the advice to use single quotes, and single-quoted LaTeX, on one line or several, loads as written.
+TEST(SceneFile, LatexInDoubleQuotesIsRefusedWithTheAdviceToUseSingleQuotes) {
+  const std::string body = "[[body]]\nshape = \"sphere\"\n[[equation]]\n";
+  for (const char* tex : {"\"\\frac{1}{2}\"", "\"x = 1, \\nu = 3\"", "\"\\rho\"", "\"\\beta\"", "\"\"\"\n\\theta\"\"\""}) {
+    const std::string error = error_of(body + "tex = " + tex + "\n");
+    EXPECT_NE(error.find(":4: [[equation]] 1 field 'tex': TOML read \\"), std::string::npos) << tex << ": " << error;
+    EXPECT_NE(error.find("write LaTeX in single quotes, tex = '\\theta'"), std::string::npos) << tex << ": " << error;
+  }
+  EXPECT_NE(error_of(body + "tex = \"\\alpha\"\n").find("write LaTeX in single quotes, tex = '\\alpha'"), std::string::npos);
+  const std::string path = write_scene("single_quoted_latex", body + "tex = '\\theta = \\frac{1}{2}'\n[[equation]]\ntex = \'\'\'\n\\rho\n\\nu\n\'\'\'\n");
+  const Scene scene = load_scene(path);
+  ASSERT_EQ(scene.equations.size(), 2u);
+  EXPECT_EQ(scene.equations[0].tex, "\\theta = \\frac{1}{2}");
+  EXPECT_EQ(scene.equations[1].tex, "\\rho\n\\nu\n");
+}
+
 TEST(SceneFile, RotationTurnsAboutWorldXThenYThenZRightHanded) {
   const Scene quarter = scene_of("[[body]]\nshape = \"box\"\nrotation = [0, 0, 90]\n");
   const physics::Quat z = quarter.bodies[0].orientation;
