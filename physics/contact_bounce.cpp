@@ -120,11 +120,20 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   write_impact_rows(place, g, hit, separation, solver_bodies, true);
 
   // 3. The normal impulses, the points that meet together, Gauss-Seidel forwards and backwards so
-  // that no point of a face that lands flat takes more than its share. A point of the pair that
-  // touches already takes part too, plastic (it may push, to no approach): a box rocking onto its
-  // other edge is held at the edge it rests on, not driven in by the turn the landing gives it.
+  // that no point of a face that lands flat takes more than its share. The pair's other points take
+  // part too, as the soft contact's speculative rows do (they may push, to close their gap in what
+  // is left of the sub-step and no further): a box rocking onto its other edge is held at the edge
+  // it rests on, or a hair above it, not driven in by the turn the landing gives it. One that
+  // touches may not approach at all.
   bool holds[kMaxManifoldPoints] = {};
-  for (int i = 0; i < m.count; ++i) holds[i] = !hit[i] && separation[i] <= kTouching;
+  Real hold_target[kMaxManifoldPoints] = {};
+  const Real rest = h - first_meeting;
+  for (int i = 0; i < m.count; ++i) {
+    if (hit[i]) continue;
+    const Real gap = separation[i] + first_meeting * normal_velocity(sa, sb, g.normal, rows[i], l);
+    holds[i] = gap <= kTouching || rest > 0;
+    hold_target[i] = gap <= kTouching ? 0 : -gap / rest;
+  }
   JointSolver* joints = joints_ && (joints_->jointed(m.a) || joints_->jointed(m.b)) ? joints_ : nullptr;
   // Without joints bounces run on several threads at once: the pair's own two slots; with joints
   // (one thread) the cluster's too.
@@ -150,7 +159,7 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
       const int i = pass % 2 ? m.count - 1 - k : k;
       if (!hit[i] && !holds[i]) continue;
       const Real vn = normal_velocity(sa, sb, g.normal, rows[i], l);
-      const Real target = hit[i] ? hits[i].target : 0;
+      const Real target = hit[i] ? hits[i].target : hold_target[i];
       const Real new_impulse = std::max(impulse[i] + rows[i].normal_mass[l] * (target - vn), Real(0));
       apply(i, new_impulse - impulse[i]);
       change = std::max(change, std::abs(new_impulse - impulse[i]));

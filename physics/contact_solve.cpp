@@ -7,14 +7,15 @@
 #include "physics/contact_solver.h"
 #include "physics/friction.h"
 #include "physics/normal_impulse.h"
+#include "physics/pair_points.h"
 
 namespace impulse::physics {
 
 namespace {
-// The passes over a pair's points (solve_lanes): until a pass changes no point's normal velocity
-// by more than this, or at most this many.
+// The Gauss-Seidel passes over a pair's points where the pivoting did not settle: until a pass
+// changes no point's normal velocity by more than this, or at most this many.
 constexpr Real kTolerance = 1e-5;  // m/s
-constexpr int kMostPasses = 4;
+constexpr int kMostPasses = 16;
 }  // namespace
 
 bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_bodies, Real inv_h, bool use_bias) {
@@ -45,15 +46,14 @@ bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_b
 
 // The lanes `solved` of a block of manifolds with N points each, which move no body in common.
 //
-// Normal rows (normal_impulse.h): Gauss-Seidel point after point, as if each impulse were applied
-// to the bodies at once; but the points of one pair see each other only through the coupling
-// matrix, so the passes update their normal velocities alone, and the bodies get the sum
-// afterwards (the same arithmetic, without a chain through the bodies' velocities after every
-// point). The passes over a pair's points go on until they agree: the pair's soft rows solved
-// (the biased solve's compliant rows, the relax solve's rigid ones), so that no point of a face
-// gets more than its share whatever the order (one pass leaves the first point more: a box that
-// lands flat starts to turn, a wall of boxes one box thick sways). They start forwards and
-// backwards in turn from one sub-step to the next. Then the friction rows (friction.h) at the
+// Normal rows (normal_impulse.h): the pair's points solved together, exactly (pair_points.h: the
+// biased solve's compliant rows, the relax solve's rigid ones), so that no point of a face gets
+// more than its share whatever the order (one pass of Gauss-Seidel leaves the first point more: a
+// box that lands flat starts to turn, a wall of boxes one box thick sways). The points of one pair
+// see each other only through the coupling matrix, so their normal velocities move alone and the
+// bodies get the sum afterwards. Where the pivoting does not settle (rounding at a point that
+// neither pushes nor separates), Gauss-Seidel passes point after point until they agree, forwards
+// and backwards in turn from one sub-step to the next. Then the friction rows (friction.h) at the
 // points' centroid.
 template <int N, bool Backwards, bool UseBias>
 void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies& solver_bodies, Real inv_h) {
@@ -91,17 +91,31 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies
   }
   Real2 applied_sum = splat(0);
   V3 turn_a{applied_sum, applied_sum, applied_sum}, turn_b = turn_a;
-  for (int pass = 0; pass < (N > 1 ? kMostPasses : 1); ++pass) {
+  auto apply = [&](int k, Real2 applied) {
+    impulse[k] = impulse[k] + applied;
+    applied_sum = applied_sum + applied;
+    turn_a = turn_a + applied * points[k].angular_a;
+    turn_b = turn_b + applied * points[k].angular_b;
+    for (int j = 0; j < N; ++j) vn[j] = vn[j] + block.coupling[j][k] * applied;
+  };
+  // A pair's points at once (pair_points.h); Gauss-Seidel passes where that did not settle.
+  Mask2 by_passes = solved;
+  if constexpr (N > 1) {
+    PairRowsIn in[N];
+    Real2 solution[N];
+    for (int i = 0; i < N; ++i) {
+      in[i] = {select(solved, rows[i].mass, splat(0)), rows[i].push, rows[i].keep};
+      solution[i] = impulse[i];
+    }
+    by_passes = solved & ~solve_pair_points<N>(block.coupling, in, vn, solution);
+    for (int k = 0; k < N; ++k) apply(k, solution[k] - impulse[k]);
+  }
+  for (int pass = 0; any(by_passes) && pass < (N > 1 ? kMostPasses : 1); ++pass) {
     Real2 vn_before[N];
     for (int k = 0; k < N; ++k) vn_before[k] = vn[k];
     for (int order = 0; order < N; ++order) {
       const int k = (pass % 2 == 1) != Backwards ? N - 1 - order : order;
-      const Real2 applied = select(solved, clamped_normal_impulse(rows[k], impulse[k], vn[k]), impulse[k]) - impulse[k];
-      impulse[k] = impulse[k] + applied;
-      applied_sum = applied_sum + applied;
-      turn_a = turn_a + applied * points[k].angular_a;
-      turn_b = turn_b + applied * points[k].angular_b;
-      for (int j = 0; j < N; ++j) vn[j] = vn[j] + block.coupling[j][k] * applied;
+      apply(k, select(by_passes, clamped_normal_impulse(rows[k], impulse[k], vn[k]), impulse[k]) - impulse[k]);
     }
     Mask2 moving = (vn[0] - vn_before[0] > kTolerance) | (vn_before[0] - vn[0] > kTolerance);
     for (int k = 1; k < N; ++k) moving = moving | (vn[k] - vn_before[k] > kTolerance) | (vn_before[k] - vn[k] > kTolerance);
