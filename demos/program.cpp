@@ -22,6 +22,7 @@ namespace {
 Comparison panes_of(const SceneFile& file, const CompareSpec& compare, const VideoOverrides& overrides) {
   Comparison comparison;
   comparison.scenes = demos::load_variants(file, overrides.scene_arguments.settings, compare);
+  for (const std::string& warning : demos::compare_warnings(comparison.scenes, compare)) std::fprintf(stderr, "impulse: %s\n", warning.c_str());
   comparison.paths.assign(compare.values.size(), file.path());
   for (size_t i = 0; i < comparison.scenes.size(); ++i) comparison.panes.push_back({nullptr, compare.labels[i]});
   return comparison;

@@ -42,7 +42,10 @@ int check(const CheckArguments& arguments) {
   const SceneFile file(path);
   const Scene scene = load(file, arguments.scene);
   std::vector<Scene> panes;  // each pane's values, checked as the file's are
-  if (!scene.compare.values.empty()) panes = load_variants(file, arguments.scene.settings, scene.compare);
+  if (!scene.compare.values.empty()) {
+    panes = load_variants(file, arguments.scene.settings, scene.compare);
+    for (const std::string& warning : compare_warnings(panes, scene.compare)) std::fprintf(stderr, "impulse: %s\n", warning.c_str());
+  }
   std::printf("%s: fine, %zu bodies, %.1f s, %zu checks\n", path.c_str(), scene.bodies.size(), scene.duration,
               scene.checks.size());
   if (!arguments.simulate) return 0;

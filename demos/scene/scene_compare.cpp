@@ -2,6 +2,9 @@
 
 #include "demos/scene/scene_sections.h"
 
+#include "physics/materials.h"
+
+#include <cstdio>
 #include <sstream>
 
 namespace impulse::demos {
@@ -79,6 +82,91 @@ void read_compare(TableReader& top, Scene& scene) {
   r.finish();
 }
 
+namespace {
+
+// Whether two panes meet with the same materials in every pair that can touch (not two still
+// bodies); if not, `differs` is left alone. `why`: a pair that hides the difference between them,
+// in words ("'bob' meets 'block' with the larger restitution, the block's 0.5").
+bool same_contacts(const Scene& a, const Scene& b, std::string& why) {
+  const size_t n = std::min(a.bodies.size(), b.bodies.size());
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j) {
+      if (a.bodies[i].is_static && a.bodies[j].is_static) continue;
+      const physics::ContactMaterial ma = physics::contact_material(a.bodies[i].material, a.bodies[j].material, a.world.pair_materials);
+      const physics::ContactMaterial mb = physics::contact_material(b.bodies[i].material, b.bodies[j].material, b.world.pair_materials);
+      if (ma.friction != mb.friction || ma.restitution != mb.restitution) return false;
+    }
+  // Where the bodies' own values differ, say what hid it.
+  for (size_t i = 0; i < n && why.empty(); ++i) {
+    const physics::Material &x = a.bodies[i].material, &y = b.bodies[i].material;
+    if (x.restitution == y.restitution && x.friction == y.friction) continue;
+    for (size_t j = 0; j < n && why.empty(); ++j) {
+      if (j == i || (a.bodies[i].is_static && a.bodies[j].is_static)) continue;
+      const physics::Material& other = a.bodies[j].material;
+      char text[256];
+      if (x.restitution != y.restitution && other.restitution >= std::max(x.restitution, y.restitution))
+        std::snprintf(text, sizeof text, "'%s' meets '%s' with the larger restitution of the two, the %s's %g",
+                      a.bodies[i].name.c_str(), a.bodies[j].name.c_str(), a.bodies[j].name.c_str(), double(other.restitution));
+      else if (x.friction != y.friction && other.friction == 0)
+        std::snprintf(text, sizeof text, "'%s' meets '%s', whose friction is 0: the pair's is the geometric mean, 0",
+                      a.bodies[i].name.c_str(), a.bodies[j].name.c_str());
+      else
+        std::snprintf(text, sizeof text, "a [[material_pair]] sets what '%s' meets '%s' with", a.bodies[i].name.c_str(),
+                      a.bodies[j].name.c_str());
+      why = text;
+    }
+  }
+  if (why.empty()) why = "every pair the varied bodies can touch gets the same material";
+  return true;
+}
+
+bool varies_material(const std::string& key) {
+  for (const char* field : {".restitution", ".friction"})
+    if (key.size() > std::string(field).size() && key.compare(key.size() - std::string(field).size(), std::string::npos, field) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
+std::vector<std::string> compare_warnings(const std::vector<Scene>& panes, const CompareSpec& compare) {
+  std::vector<std::string> warnings;
+  if (!varies_material(compare.key) || panes.empty()) return warnings;
+  // A pane's restitution that every pair overrides: the body bounces with another's, larger.
+  const Scene& first = panes[0];
+  for (size_t i = 0; i < first.bodies.size(); ++i) {
+    bool varied = false;
+    for (const Scene& pane : panes) varied = varied || pane.bodies[i].material.restitution != first.bodies[i].material.restitution;
+    if (!varied) continue;
+    for (size_t p = 0; p < panes.size(); ++p) {
+      const physics::Real own = panes[p].bodies[i].material.restitution;
+      physics::Real least = 1e9;  // the least restitution it bounces with off anything it can touch
+      size_t by = i;
+      for (size_t j = 0; j < panes[p].bodies.size(); ++j) {
+        if (j == i || (panes[p].bodies[i].is_static && panes[p].bodies[j].is_static)) continue;
+        const physics::Real e =
+            physics::contact_material(panes[p].bodies[i].material, panes[p].bodies[j].material, panes[p].world.pair_materials).restitution;
+        if (e < least) least = e, by = j;
+      }
+      if (by == i || least <= own) continue;
+      char text[512];
+      std::snprintf(text, sizeof text,
+                    ": warning: pane %zu (%s): '%s' bounces with %g at least, not %g: a pair takes the larger of its two "
+                    "restitutions ('%s' has %g); set the other bodies' restitution too, or give the pair its own with a [[material_pair]]",
+                    p + 1, compare.labels[p].c_str(), first.bodies[i].name.c_str(), double(least), double(own),
+                    first.bodies[by].name.c_str(), double(least));
+      warnings.push_back(compare.origin + text);
+    }
+  }
+  for (size_t p = 0; p < panes.size(); ++p)
+    for (size_t q = p + 1; q < panes.size(); ++q) {
+      std::string why;
+      if (same_contacts(panes[p], panes[q], why))
+        warnings.push_back(compare.origin + ": warning: panes " + std::to_string(p + 1) + " and " + std::to_string(q + 1) +
+                           " (" + compare.labels[p] + ", " + compare.labels[q] + ") will look the same: " + why);
+    }
+  return warnings;
+}
+
 std::vector<Scene> load_variants(const SceneFile& file, const std::vector<std::string>& settings,
                                  const CompareSpec& compare) {
   std::vector<Scene> scenes;
@@ -93,6 +181,15 @@ std::vector<Scene> load_variants(const SceneFile& file, const std::vector<std::s
     Scene& scene = scenes.back();
     scene.compare = CompareSpec{};
     std::erase_if(scene.checks, [&](const CheckSpec& check) { return check.pane != 0 && check.pane != int(i) + 1; });
+  }
+  if (varies_material(compare.key)) {
+    bool all_same = true;
+    std::string why;
+    for (size_t i = 1; i < scenes.size() && all_same; ++i) all_same = same_contacts(scenes[0], scenes[i], why);
+    if (all_same)
+      throw SceneError(compare.origin + ": every pane meets with the same materials, so the comparison would show nothing: " + why +
+                       ". Vary the other body's value too (--set), or give the pair its own with a [[material_pair]] " +
+                       "(docs/scene_files.md)");
   }
   return scenes;
 }

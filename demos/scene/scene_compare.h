@@ -26,7 +26,16 @@ CompareSpec compare_from_vary(const std::string& vary);
 // The scenes of a comparison, one per value: each is read from the parsed file with `settings`
 // and KEY=VALUE over it, keeping the [[check]]s about its pane (pane 0 or its number), without
 // [compare]. A value the field refuses is reported with `compare.origin`.
+//
+// A varied restitution or friction is seen only through the pairs' materials (physics/materials.h:
+// the larger restitution, the geometric mean of the frictions, or a [[material_pair]]'s): when
+// every pair a varied body can meet gets the same material in every pane, the comparison shows
+// nothing and is refused with the reason.
 std::vector<Scene> load_variants(const SceneFile& file, const std::vector<std::string>& settings,
                                  const CompareSpec& compare);
+
+// Panes that meet with the same materials everywhere although their values differ (the others
+// do not): "panes 1 and 2 ...", with the reason; one line each, for stderr.
+std::vector<std::string> compare_warnings(const std::vector<Scene>& panes, const CompareSpec& compare);
 
 }  // namespace impulse::demos
