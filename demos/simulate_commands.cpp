@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 namespace impulse::demos {
 namespace {
@@ -37,6 +38,11 @@ int simulate(const SimulateArguments& arguments) {
   return report_checks(arguments.scene_path, checks);
 }
 
+// "1 check", "2 checks".
+std::string checks_count(size_t count) { return std::to_string(count) + (count == 1 ? " check" : " checks"); }
+
+// `check` says the file reads fine; `check --simulate` says so only after its checks, with
+// their verdict, so that no "fine" stands above a FAIL.
 int check(const CheckArguments& arguments) {
   const std::string& path = arguments.scene_path;
   const SceneFile file(path);
@@ -46,20 +52,28 @@ int check(const CheckArguments& arguments) {
     panes = load_variants(file, arguments.scene.settings, scene.compare);
     for (const std::string& warning : compare_warnings(panes, scene.compare)) std::fprintf(stderr, "impulse: %s\n", warning.c_str());
   }
-  std::printf("%s: fine, %zu bodies, %.1f s, %zu checks\n", path.c_str(), scene.bodies.size(), scene.duration,
-              scene.checks.size());
-  if (!arguments.simulate) return 0;
-  if (scene.compare.values.empty()) {
-    std::vector<CheckResult> checks;
-    simulate_scene(scene, TraceOptions{}, &checks);
-    return report_checks(path, checks);
+  if (!arguments.simulate) {
+    std::printf("%s: fine, %zu bodies, %.1f s, %s%s\n", path.c_str(), scene.bodies.size(), scene.duration,
+                checks_count(scene.checks.size()).c_str(), scene.checks.empty() ? "" : " (not run: --simulate runs them)");
+    return 0;
   }
-  int exit_code = 0;  // each pane of the comparison, with its checks
-  for (size_t i = 0; i < panes.size(); ++i) {
+  int exit_code = 0;
+  size_t checked = 0, failed = 0;
+  auto run = [&](const Scene& pane, const std::string& label) {  // a pane of the comparison, or the scene
     std::vector<CheckResult> checks;
-    simulate_scene(panes[i], TraceOptions{}, &checks);
-    exit_code = std::max(exit_code, report_checks(path + " [" + scene.compare.labels[i] + "]", checks));
-  }
+    simulate_scene(pane, TraceOptions{}, &checks);
+    exit_code = std::max(exit_code, report_checks(label, checks));
+    checked += checks.size();
+    failed += size_t(std::count_if(checks.begin(), checks.end(), [](const CheckResult& c) { return !c.passed; }));
+  };
+  if (panes.empty()) run(scene, path);
+  for (size_t i = 0; i < panes.size(); ++i) run(panes[i], path + " [" + scene.compare.labels[i] + "]");
+  if (failed == 0)
+    std::printf("%s: fine, %zu bodies, %.1f s, %s pass%s\n", path.c_str(), scene.bodies.size(), scene.duration,
+                checks_count(checked).c_str(), checked == 1 ? "es" : "");
+  else
+    std::printf("%s: %zu of its %zu checks FAIL (%zu bodies, %.1f s)\n", path.c_str(), failed, checked, scene.bodies.size(),
+                scene.duration);
   return exit_code;
 }
 

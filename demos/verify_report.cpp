@@ -23,7 +23,7 @@ void write_moment(std::ofstream& page, const std::string& path, const MomentRepo
   for (const std::string& line : moment.lines) page << "<li>" << html(line) << "</li>\n";
   page << "</ul>\n";
   if (!moment.strip.empty()) {
-    page << "<p>golden | actual | diff (red: differs; yellow: an anti-aliased edge, forgiven)</p>\n<a href=\""
+    page << "<p>golden | actual | diff (red: differs; pink: differs faintly; yellow: an anti-aliased edge, forgiven)</p>\n<a href=\""
          << link(path, moment.strip) << "\"><img src=\"" << link(path, moment.strip) << "\" alt=\"golden, actual, diff\"></a>\n";
   } else if (!moment.actual.empty()) {
     page << "<p>actual</p>\n<img src=\"" << link(path, moment.actual) << "\" alt=\"actual\">\n";

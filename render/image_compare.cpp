@@ -71,41 +71,58 @@ bool anti_aliased(const View& image, const View& other, int x, int y) {
          (has_many_siblings(image, brightest_x, brightest_y) && has_many_siblings(other, brightest_x, brightest_y));
 }
 
-// The connected regions (8 neighbours) of differing pixels: the largest one's size and box.
-void find_largest_region(ImageDifference& difference) {
+// The largest connected region (8 neighbours) of differing pixels and those whose verdict is `also`
+// (differs again, or faint).
+PixelRegion largest_region(const ImageDifference& difference, PixelVerdict also) {
   const int width = difference.width, height = difference.height;
+  auto counts = [&](size_t index) {
+    const PixelVerdict verdict = difference.verdicts[index];
+    return verdict == PixelVerdict::differs || verdict == also;
+  };
   std::vector<char> seen(difference.verdicts.size(), 0);
   std::vector<int> stack;
+  PixelRegion largest;
   for (size_t start = 0; start < difference.verdicts.size(); ++start) {
-    if (seen[start] || difference.verdicts[start] != PixelVerdict::differs) continue;
-    int size = 0, left = width, top = height, right = -1, bottom = -1;
+    if (seen[start] || !counts(start)) continue;
+    PixelRegion region{0, width, height, -1, -1};
     seen[start] = 1;
     stack.assign(1, int(start));
     while (!stack.empty()) {
       const int index = stack.back();
       stack.pop_back();
       const int x = index % width, y = index / width;
-      ++size;
-      left = std::min(left, x), right = std::max(right, x), top = std::min(top, y), bottom = std::max(bottom, y);
+      ++region.pixels;
+      region.left = std::min(region.left, x), region.right = std::max(region.right, x);
+      region.top = std::min(region.top, y), region.bottom = std::max(region.bottom, y);
       for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, height - 1); ++ny)
         for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, width - 1); ++nx) {
           const int next = ny * width + nx;
-          if (seen[next] || difference.verdicts[next] != PixelVerdict::differs) continue;
+          if (seen[next] || !counts(size_t(next))) continue;
           seen[next] = 1;
           stack.push_back(next);
         }
     }
-    if (size <= difference.largest_region) continue;
-    difference.largest_region = size;
-    difference.left = left, difference.top = top, difference.right = right, difference.bottom = bottom;
+    if (region.pixels > largest.pixels) largest = region;
   }
+  return largest;
 }
 
 std::string summarise(const ImageDifference& difference, const ImageTolerance& tolerance) {
   char text[400];
-  if (difference.differing_pixels == 0) {
-    std::snprintf(text, sizeof text, "no pixel differs (YIQ distance over %.2f); %d anti-aliased edge pixels forgiven",
-                  tolerance.colour_threshold, difference.anti_aliased_pixels);
+  const PixelRegion& faint = difference.largest_faint_region;
+  if (faint.pixels > tolerance.max_faint_region_pixels && difference.largest_region <= tolerance.max_region_pixels) {
+    std::snprintf(text, sizeof text,
+                  "a faint difference over an area: %d touching pixels over a YIQ distance of %.2f (allowed: %d), "
+                  "in x %d..%d, y %d..%d; %d pixels over %.2f; %d anti-aliased edge pixels forgiven",
+                  faint.pixels, tolerance.faint_threshold, tolerance.max_faint_region_pixels, faint.left, faint.right,
+                  faint.top, faint.bottom, difference.differing_pixels, tolerance.colour_threshold,
+                  difference.anti_aliased_pixels);
+  } else if (difference.differing_pixels == 0) {
+    std::snprintf(text, sizeof text,
+                  "no pixel differs (YIQ distance over %.2f), no region of more than %d over %.2f (largest: %d); %d "
+                  "anti-aliased edge pixels forgiven",
+                  tolerance.colour_threshold, tolerance.max_faint_region_pixels, tolerance.faint_threshold, faint.pixels,
+                  difference.anti_aliased_pixels);
   } else {
     std::snprintf(text, sizeof text,
                   "largest region of differing pixels %d (allowed: %d), in x %d..%d, y %d..%d; %d pixels differ in all, "
@@ -134,17 +151,30 @@ ImageDifference compare_images(const Frame& expected, const Frame& actual, Image
   }
   const View a{expected}, b{actual};
   const double largest = kLargestDelta * tolerance.colour_threshold * tolerance.colour_threshold;
+  const double faintest = kLargestDelta * tolerance.faint_threshold * tolerance.faint_threshold;
   for (int y = 0; y < difference.height; ++y)
     for (int x = 0; x < difference.width; ++x) {
-      if (!(yiq_delta(a.at(x, y), b.at(x, y)) > largest)) continue;
+      const double delta = yiq_delta(a.at(x, y), b.at(x, y));
+      if (!(delta > faintest)) continue;
       const bool edge = anti_aliased(a, b, x, y) || anti_aliased(b, a, x, y);
-      difference.verdicts[size_t(y) * difference.width + x] = edge ? PixelVerdict::anti_aliased : PixelVerdict::differs;
-      ++(edge ? difference.anti_aliased_pixels : difference.differing_pixels);
+      PixelVerdict& verdict = difference.verdicts[size_t(y) * difference.width + x];
+      if (delta > largest) {
+        verdict = edge ? PixelVerdict::anti_aliased : PixelVerdict::differs;
+        ++(edge ? difference.anti_aliased_pixels : difference.differing_pixels);
+      } else if (!edge) {  // a faint edge pixel is the same as below the faint threshold
+        verdict = PixelVerdict::faint;
+        ++difference.faint_pixels;
+      }
     }
   difference.differing_share = double(difference.differing_pixels) / double(difference.verdicts.size());
-  find_largest_region(difference);
+  const PixelRegion differing = largest_region(difference, PixelVerdict::differs);
+  difference.largest_region = differing.pixels;
+  difference.left = differing.left, difference.top = differing.top;
+  difference.right = differing.right, difference.bottom = differing.bottom;
+  difference.largest_faint_region = largest_region(difference, PixelVerdict::faint);
   difference.matches = difference.largest_region <= tolerance.max_region_pixels &&
-                       difference.differing_share <= tolerance.max_differing_share;
+                       difference.differing_share <= tolerance.max_differing_share &&
+                       difference.largest_faint_region.pixels <= tolerance.max_faint_region_pixels;
   difference.summary = summarise(difference, tolerance);
   return difference;
 }
@@ -159,6 +189,8 @@ Frame difference_image(const Frame& expected, const Frame& actual, const ImageDi
       const PixelVerdict verdict = difference.verdicts[size_t(y) * difference.width + x];
       if (verdict == PixelVerdict::differs) {
         out[0] = 255, out[1] = 0, out[2] = 0;
+      } else if (verdict == PixelVerdict::faint) {
+        out[0] = 255, out[1] = 140, out[2] = 170;
       } else if (verdict == PixelVerdict::anti_aliased) {
         out[0] = 255, out[1] = 210, out[2] = 0;
       } else {

@@ -28,7 +28,7 @@ void read_criterion(TableReader& r, CheckSpec& check) {
   std::string listed;
   for (const std::string& field : own) listed += (listed.empty() ? "`" : ", `") + field + "`";
   for (const std::string& field : kCriteria)
-    if (std::find(own.begin(), own.end(), field) == own.end() && r.has(field))
+    if (std::find(own.begin(), own.end(), field) == own.end() && r.gives(field))
       r.fail(r.get(field), field, "a check of kind \"" + check.kind + "\" does not use it (its bounds: " + listed + ")");
 
   const std::string& kind = check.kind;

@@ -90,7 +90,8 @@ std::vector<CheckResult> CheckWatch::results() const {
     } else if (check.kind == "energy") {
       const double share = state.extreme / std::max(std::abs(state.start_value), 1e-12);
       result.passed = share <= check.tolerance;
-      result.measured = format("rose by %.3g of its start (at most %.3g)", std::max(share, 0.0), check.tolerance);
+      result.measured = format("rose by at most %.3g J, %.3g %% of its start (allowed: %.3g %%)", std::max(state.extreme, 0.0),
+                               100 * std::max(share, 0.0), 100 * check.tolerance);
     } else if (check.kind == "at_rest") {
       result.passed = state.extreme < check.speed;
       result.measured = format("fastest %.3g m/s (below %.3g)", state.extreme, check.speed);

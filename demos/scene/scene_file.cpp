@@ -2,6 +2,7 @@
 
 #include "demos/scene/scene_overrides.h"
 #include "demos/scene/scene_sections.h"
+#include "demos/scene/toml_syntax.h"
 
 #include <filesystem>
 #include <fstream>
@@ -43,11 +44,12 @@ SceneFile::SceneFile(std::string path) : path_(std::move(path)) {
     root_ = toml::parse(text, path_);
   } catch (const toml::parse_error& error) {
     std::ostringstream message;
-    message << path_ << ':' << error.source().begin.line << ": " << error.description();
+    const int line = int(error.source().begin.line);
+    message << path_ << ':' << line << ": " << plain_syntax_error(error.description(), line, int(error.source().begin.column), text);
     if (error.description().find("utf-8") != std::string_view::npos) message << " (save the file as UTF-8)";
     if (error.description().find("escape sequence") != std::string_view::npos)
       message << " (in double quotes a backslash starts an escape: write LaTeX in single quotes, tex = '\\alpha')";
-    throw SceneError(message.str(), ScenePlace{path_, int(error.source().begin.line), "", "", ""});
+    throw SceneError(message.str(), ScenePlace{path_, line, "", "", ""});
   }
 }
 

@@ -89,6 +89,8 @@ const toml::node* TableReader::get(std::string_view key) {
   return table_.get(key);
 }
 
+bool TableReader::has(std::string_view key) { return get(key) != nullptr; }
+
 double TableReader::number(std::string_view key, double fallback, double min, double max, bool exclusive_min) {
   const toml::node* node = get(key);
   if (!node) return fallback;

@@ -49,8 +49,13 @@ class TableReader {
   // (literal, one or more lines), or 0 when it has no line of the file (--set, a dict).
   char quotes(const toml::node* node) const;
 
+  // The fields finish() names as known are those asked for, by get(), has() or a typed read, so
+  // ask about every field the table can have (in its kind: a sphere's, a rod's) before finish().
   const toml::node* get(std::string_view key);  // marks the key as known; null when absent
-  bool has(std::string_view key) const { return table_.contains(key); }  // without marking it
+  bool has(std::string_view key);               // marks the key as known
+  // Whether the table gives `key` without marking it: for a field the caller refuses here (another
+  // kind's), which finish() must not name as known.
+  bool gives(std::string_view key) const { return table_.contains(key); }
   double number(std::string_view key, double fallback, double min = -INFINITY, double max = INFINITY,
                 bool exclusive_min = false);
   int integer(std::string_view key, int fallback, int min, int max);

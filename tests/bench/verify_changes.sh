@@ -3,9 +3,11 @@
 # bounce.toml's goldens at four moments, then a recoloured ball, the ball moved by a quarter of its
 # radius, a missing arrow (the velocity arrows, with the legend off in goldens and run alike, so
 # that only the arrows differ), one caption word changed (2 m -> 3 m) and a missing legend line
-# (friction impulse). One line per moment compared:
-#   QUALITY CASE t=SECONDS REGION SHARE% VERDICT BOX
-# BOX is where the largest region of differing pixels lies.
+# (friction impulse); and a block at rest, asleep and drawn pale at 2 s, recoloured green ->
+# vermillion. One line per moment compared:
+#   QUALITY CASE t=SECONDS REGION SHARE% FAINT VERDICT BOX
+# BOX is where the largest region of differing pixels lies; FAINT is the largest region over the
+# faint threshold when that is what differs.
 # Usage: tests/bench/verify_changes.sh build/demos/impulse OUT_DIR [low medium high] > table.txt
 set -uo pipefail
 impulse=$(realpath "$1"); out=$2; shift 2
@@ -20,10 +22,29 @@ rows() {  # quality case -- verify arguments...
     while read -r time verdict line; do
       region=$(sed -n 's/.*largest region of differing pixels \([0-9]*\).*/\1/p' <<<"$line")
       share=$(sed -n 's/.* \([0-9.]*\) % of the frame.*/\1/p' <<<"$line")
+      faint=$(sed -n 's/.*a faint difference over an area: \([0-9]*\) touching pixels.*/\1/p' <<<"$line")
       box=$(sed -n 's/.*\(in x [0-9]*\.\.[0-9]*, y [0-9]*\.\.[0-9]*\).*/\1/p' <<<"$line")
-      echo "$quality $case t=$time ${region:-0} ${share:-0} $verdict ${box// /_}"
+      echo "$quality $case t=$time ${region:-0} ${share:-0} ${faint:-0} $verdict ${box// /_}"
     done
 }
+
+block=$out/pale_block.toml  # a block at rest, seen from its side: asleep from about 1 s
+mkdir -p "$out"
+cat >"$block" <<'END'
+[scene]
+duration = 2.0
+[camera]
+position = [0.8, 0.25, 3.5]
+target = [0, 0.2, 0]
+[[body]]
+shape = "plane"
+[[body]]
+name = "block"
+shape = "box"
+size = [0.8, 0.4, 0.4]
+position = [0, 0.2, 0]
+colour = "#009e73"
+END
 
 for quality in $qualities; do
   golden=$out/$quality/bounce bare=$out/$quality/bounce_no_legend
@@ -35,4 +56,7 @@ for quality in $qualities; do
   rows "$quality" no_velocity_arrows -- "${run[@]}" --golden "$bare" --set overlay.legend=false --set draw.velocities=false
   rows "$quality" caption_word -- "${run[@]}" --golden "$golden" --at 0.3 --set "$caption"
   rows "$quality" no_friction_legend_line -- "${run[@]}" --golden "$golden" --at 0.3 --set draw.friction=false
+  "$impulse" -q verify "$block" --quality "$quality" --golden "$out/$quality/pale_block" --at 0,2 --update >/dev/null 2>&1
+  rows "$quality" pale_recoloured -- "$impulse" -q verify "$block" --quality "$quality" --golden "$out/$quality/pale_block" \
+    --set 'body[block].colour="#d55e00"'
 done

@@ -3,6 +3,7 @@
 #include "tests/program/in_process.h"
 #include "tests/program/program_test_files.h"
 #include <filesystem>
+#include <regex>
 
 #include <gtest/gtest.h>
 
@@ -42,6 +43,37 @@ speed = 0.01
   const testing::ProgramRun fixed = run_in_process(
       {"check", "--simulate", (dir / "checked.toml").string(), "--set", "check[1].body=heavy", "--set", "check[1].speed=2.5"});
   EXPECT_TRUE(fixed.succeeded()) << fixed.describe();
+}
+
+// `check --simulate` gives its verdict after the checks: "fine" only when every one passes (never a
+// "fine" above a FAIL), and each measure with its unit: the energy's rise in J and in % of its start.
+TEST(Checks, CheckSimulateSaysFineOnlyWhenEveryCheckPasses) {
+  const fs::path dir = work_directory();
+  const std::string scene = (dir / "checked.toml").string();
+  std::ofstream(scene) << std::string(kHeadOn) + R"(
+[[check]]
+kind = "energy"
+[[check]]
+kind = "at_rest"
+body = "light"
+from = 1.0
+speed = 0.01
+)";
+  const testing::ProgramRun failing = run_in_process({"check", "--simulate", scene});
+  EXPECT_EQ(failing.exit_code, 2) << failing.describe();
+  EXPECT_EQ(failing.stdout_text, scene + ": 1 of its 2 checks FAIL (2 bodies, 2.0 s)\n") << failing.describe();
+  EXPECT_TRUE(std::regex_search(failing.stderr_text,
+                                std::regex(R"(pass \[\[check\]\] 1 \(energy\): rose by at most [-0-9.e+]+ J, [-0-9.e+]+ % )"
+                                           R"(of its start \(allowed: 1 %\))")))
+      << failing.stderr_text;
+  const testing::ProgramRun passing =
+      run_in_process({"check", "--simulate", scene, "--set", "check[1].body=heavy", "--set", "check[1].speed=2.5"});
+  EXPECT_TRUE(passing.succeeded()) << passing.describe();
+  EXPECT_EQ(passing.stdout_text, scene + ": fine, 2 bodies, 2.0 s, 2 checks pass\n") << passing.describe();
+  const testing::ProgramRun read = run_in_process({"check", scene});
+  EXPECT_TRUE(read.succeeded()) << read.describe();
+  EXPECT_EQ(read.stdout_text, scene + ": fine, 2 bodies, 2.0 s, 2 checks (not run: --simulate runs them)\n")
+      << read.describe();
 }
 
 // TeX that latex refuses is the scene's error, with its file and line, from `check` and before a

@@ -1,7 +1,8 @@
 // `impulse verify` run as a course's CI runs it: goldens recorded at --quality low pass the next
-// run, also at other llvmpipe vector widths and frame rates; a recoloured ball and a ball moved by
-// a quarter of its radius fail with the body named; another size is refused with what to re-run;
-// the report, the actual image, the diff and the strip exist whenever named.
+// run, also at other llvmpipe vector widths and frame rates, and without --quality (the manifest's
+// size); a recoloured ball, a recoloured sleeping (pale) block and a ball moved by a quarter of its
+// radius fail, the moved body named; another size is refused with what to re-run; the report, the
+// actual image, the diff and the strip exist whenever named.
 #include <unistd.h>
 
 #include <algorithm>
@@ -137,6 +138,54 @@ TEST(Verify, FailsABallMovedByAQuarterOfItsRadiusNamingIt) {
   EXPECT_TRUE(has(moved, "t = 0.000 s DIFFERS")) << moved.stderr_text;
   EXPECT_TRUE(has(moved, "t = 0.000 s: body 'ball' moved 0.0500 m (by [0.0500, 0.0000, 0.0000])")) << moved.stderr_text;
   EXPECT_FALSE(has(moved, "body 'ground' moved")) << moved.stderr_text;
+}
+
+// Without --quality, --width, --height or --fps the goldens' size and frame rate (their manifest's)
+// are rendered, not the scene's own 1280x720 at 30 fps: goldens recorded at --quality low pass.
+TEST(Verify, ComparesAtTheGoldensSizeUnlessTold) {
+  const Goldens goldens;
+  ASSERT_TRUE(goldens.update.succeeded()) << goldens.update.describe();
+  const testing::ChildResult plain = goldens.verify({});
+  EXPECT_TRUE(plain.succeeded()) << plain.describe();
+  const testing::ChildResult faster = goldens.verify({"--fps", "30"});  // the goldens' 854x480, at 30 fps
+  EXPECT_TRUE(faster.succeeded()) << faster.describe();
+}
+
+// A block at rest, seen from its side: asleep from about 1 s, drawn pale and hatched.
+constexpr const char* kBlock = R"(
+[scene]
+title = "A block at rest"
+duration = 2.0
+[camera]
+position = [0.8, 0.25, 3.5]
+target = [0, 0.2, 0]
+[[body]]
+name = "ground"
+shape = "plane"
+[[body]]
+name = "block"
+shape = "box"
+size = [0.8, 0.4, 0.4]
+position = [0, 0.2, 0]
+colour = "#009e73"
+)";
+
+// Recoloured green -> vermillion, the block differs awake and asleep: pale, its front face is 0.09
+// apart in YIQ, under the 0.1 a few pixels must differ by, but over the whole face.
+TEST(Verify, FailsARecolouredSleepingBody) {
+  const fs::path dir = work_directory();
+  const std::string scene = (dir / "block.toml").string(), golden = (dir / "golden").string();
+  std::ofstream(scene) << kBlock;
+  const testing::ChildResult update = impulse({"verify", scene, "--golden", golden, "--quality", "low", "--at", "0,2", "--update"});
+  ASSERT_TRUE(update.succeeded()) << update.describe();
+  const testing::ChildResult same = impulse({"verify", scene, "--golden", golden, "--quality", "low"});
+  EXPECT_TRUE(same.succeeded()) << same.describe();
+  const testing::ChildResult recoloured =
+      impulse({"verify", scene, "--golden", golden, "--quality", "low", "--set", "body[block].colour=\"#d55e00\""});
+  EXPECT_EQ(recoloured.exit_code, 2) << recoloured.describe();
+  EXPECT_TRUE(has(recoloured, "t = 0.000 s DIFFERS")) << recoloured.stderr_text;
+  EXPECT_TRUE(has(recoloured, "t = 2.000 s DIFFERS from " + golden + "/t_2.000.png: a faint difference over an area"))
+      << recoloured.stderr_text;
 }
 
 TEST(Verify, RefusesAnotherSizeSayingWhatToRerun) {

@@ -71,6 +71,14 @@ def test_frames_are_the_pictures_at_the_times_asked(tmp_path):
         scene.frames([scene.duration + 1])
 
 
+def test_frames_are_the_readmes_shape_by_default_and_the_quality_asked_for():
+    # ex1_friction's video is "medium" (1280x720); frames, as render, are "low" unless asked.
+    scene = impulse.load("assets/scenes/ex1_friction.toml")
+    assert scene.frames([0.5, 1.0]).shape == (2, 480, 854, 3)
+    assert scene.frames(0.5, quality="medium").shape == (720, 1280, 3)
+    assert scene.frames([0.5], quality=None).shape == (1, 720, 1280, 3)  # the scene's own
+
+
 def test_an_unwritable_output_is_an_output_error(tmp_path):
     (tmp_path / "dir.mp4").mkdir()
     with pytest.raises(impulse.OutputError):

@@ -74,3 +74,18 @@ def test_tables_with_a_wrong_value_name_the_field_without_a_line():
     assert str(error).startswith("my tables: [[body]]")
     with pytest.raises(impulse.SceneError, match="not a scene value"):
         impulse.scene({"body": [{"shape": object()}]})
+
+
+def test_import_without_numpy_says_which_python_has_it_and_how_to_install_it():
+    """A Python without numpy (here: numpy blocked) is told what to run or install, not left with
+    a bare ModuleNotFoundError."""
+    import os
+    import subprocess
+    import sys
+    package = os.path.dirname(os.path.dirname(impulse.__file__))
+    run = subprocess.run([sys.executable, "-c", "import sys; sys.modules['numpy'] = None; import impulse"],
+                         env=dict(os.environ, PYTHONPATH=package), capture_output=True, text=True)
+    assert run.returncode != 0
+    last = run.stderr.strip().splitlines()[-1]
+    assert last.startswith("ImportError: impulse needs numpy, which this Python lacks: " + sys.executable), run.stderr
+    assert "sudo apt-get install python3-numpy" in last and f"{sys.executable} -m pip install numpy" in last

@@ -111,7 +111,35 @@ TEST(ImageCompare, ManySmallRegionsFailByTheirShare) {
   EXPECT_FALSE(difference.matches) << difference.summary;
 }
 
-// A faint change (below the perceptual threshold) is no difference.
+// A sleeping body is drawn pale. Recoloured green -> vermillion, its shaded front face goes from
+// (113, 135, 125) to (149, 119, 111) (as rendered), 0.09 apart: under the colour threshold, so no
+// pixel differs, yet over a face of 30 x 20 pixels a person sees it, and the frames differ. The
+// same change in a speck of 3 x 3 pixels does not.
+TEST(ImageCompare, AFaintChangeOverAnAreaDiffers) {
+  const uint8_t green[3] = {113, 135, 125}, vermillion[3] = {149, 119, 111};
+  const double distance = render::colour_distance(green, vermillion);
+  const render::ImageTolerance tolerance;
+  ASSERT_LT(distance, tolerance.colour_threshold);
+  ASSERT_GT(distance, tolerance.faint_threshold);
+  auto with_patch = [](const uint8_t* colour, int size_x, int size_y) {
+    Frame frame = plain(200, 150, 230);
+    for (int y = 0; y < size_y; ++y)
+      for (int x = 0; x < size_x; ++x) set(frame, 80 + x, 60 + y, colour[0], colour[1], colour[2]);
+    return frame;
+  };
+  const render::ImageDifference face = render::compare_images(with_patch(green, 30, 20), with_patch(vermillion, 30, 20));
+  EXPECT_FALSE(face.matches) << face.summary;
+  EXPECT_EQ(face.differing_pixels, 0);
+  EXPECT_EQ(face.largest_faint_region.pixels, 600);
+  EXPECT_EQ(face.largest_faint_region.left, 80);
+  EXPECT_EQ(face.largest_faint_region.bottom, 79);
+  EXPECT_NE(face.summary.find("a faint difference over an area"), std::string::npos) << face.summary;
+  const render::ImageDifference speck = render::compare_images(with_patch(green, 3, 3), with_patch(vermillion, 3, 3));
+  EXPECT_TRUE(speck.matches) << speck.summary;
+  EXPECT_EQ(speck.largest_faint_region.pixels, 9);
+}
+
+// A change below the faint threshold is no difference, even over an area.
 TEST(ImageCompare, AFaintChangeIsNoDifference) {
   const Frame expected = plain(60, 60, 128);
   Frame actual = expected;

@@ -11,8 +11,37 @@ released while a scene simulates or renders; Ctrl-C stops it and leaves no file 
 """
 
 import os
+import sys
 
-from . import _impulse
+
+def _import_error(missing):
+    """What to do when numpy or the compiled module cannot be imported: which Python the package
+    was built for (it has numpy: CMake requires it), and how to give this one numpy."""
+    try:
+        from ._built import PYTHON as built, VERSION as built_version
+    except ImportError:
+        built, built_version = "/usr/bin/python3", "Debian's"
+    this = f"{sys.executable} ({sys.version_info.major}.{sys.version_info.minor})"
+    other = os.path.realpath(sys.executable) != os.path.realpath(built)
+    run_built = (f" The package was built for {built} ({built_version}), which has numpy: run that one, e.g. "
+                 f"PYTHONPATH=build/python {built}." if other else "")
+    if missing == "numpy":
+        return (f"impulse needs numpy, which this Python lacks: {this}.{run_built} {'Or i' if other else 'I'}nstall "
+                f"numpy for this one: sudo apt-get install python3-numpy (Debian's python3), or {sys.executable} -m "
+                f"pip install numpy (a venv's or a pyenv's).")
+    return (f"impulse's compiled module does not load in this Python, {this}.{run_built or ' Build it again.'} "
+            f"(To build for another Python: cmake -B build -DPython_EXECUTABLE=/path/to/python3, which needs numpy "
+            f"and its headers.)")
+
+
+try:
+    import numpy  # noqa: F401  (every array the package gives is numpy's)
+except ImportError as error:
+    raise ImportError(_import_error("numpy")) from error
+try:
+    from . import _impulse
+except ImportError as error:
+    raise ImportError(_import_error("_impulse")) from error
 from ._toml import settings as _settings
 from .trace import Trace, Contacts
 from .video import Video
@@ -103,9 +132,11 @@ class Scene:
         written = _impulse.render(self._core, path, quality or "", _progress(progress, f"render {self.name}", "frame"))
         return Video(written)
 
-    def frames(self, times, quality=None, progress=False):
-        """The pictures at simulated times ``times`` (s), as a video would show them: a numpy
-        array (len(times), height, width, 3) of uint8 RGB."""
+    def frames(self, times, quality="low", progress=False):
+        """The pictures at simulated times ``times`` (s), as render() shows them: a numpy array
+        (len(times), height, width, 3) of uint8 RGB, (k, 480, 854, 3) at quality "low" (the
+        default, as for render), 720 x 1280 at "medium", 1080 x 1920 at "high" (None: the
+        scene's). One time, not a list: one picture (height, width, 3)."""
         single = not hasattr(times, "__len__")
         times = [float(times)] if single else [float(t) for t in times]
         pictures = _impulse.frames(self._core, times, quality or "", _progress(progress, f"render {self.name}", "frame"))
