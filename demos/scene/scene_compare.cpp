@@ -120,7 +120,10 @@ bool same_contacts(const Scene& a, const Scene& b, std::string& why) {
   return true;
 }
 
+// A body's (or a pattern's, or a material pair's) restitution or friction; not [world] friction, the
+// switch for all contacts.
 bool varies_material(const std::string& key) {
+  if (key.rfind("world.", 0) == 0) return false;
   for (const char* field : {".restitution", ".friction"})
     if (key.size() > std::string(field).size() && key.compare(key.size() - std::string(field).size(), std::string::npos, field) == 0) return true;
   return false;

@@ -79,6 +79,12 @@ TEST(CompareMaterials, ValuesThatShowNeedNoWarning) {
   const Loaded friction = load(text);
   EXPECT_EQ(friction.error, "");
   EXPECT_TRUE(friction.warnings.empty());
+  // [world] friction switches every contact's friction: not a material, nothing to warn about.
+  std::string world = bob_scene("[false, true]", "0.5");
+  world.replace(world.find("body[bob].restitution"), std::string("body[bob].restitution").size(), "world.friction");
+  const Loaded switched = load(world);
+  EXPECT_EQ(switched.error, "");
+  EXPECT_TRUE(switched.warnings.empty());
 }
 
 }  // namespace
