@@ -23,6 +23,8 @@ Body make_body(const BodyDef& def) {
   require(is_finite(def.position) && is_finite(def.velocity) && is_finite(def.angular_velocity),
           "position, velocity and angular velocity must be finite");
   require(is_finite(def.orientation) && def.orientation.norm() > Real(1e-9), "orientation must be a non-zero quaternion");
+  require(def.planar_axis >= kNotPlanar && def.planar_axis <= 2,
+          "planar_axis must be 0, 1 or 2 (x, y, z) or kNotPlanar, got " + std::to_string(def.planar_axis));
 
   Body body;
   body.name = def.name;
@@ -39,6 +41,8 @@ Body make_body(const BodyDef& def) {
     body.inv_inertia_local = body.inertia_local.inverse();
     body.velocity = def.velocity;
     body.angular_velocity = def.angular_velocity;
+    body.planar_axis = def.planar_axis;
+    hold_in_plane(body.velocity, body.angular_velocity, body.planar_axis);  // what the lock allows, from the start
   }
   body.refresh_world_inertia();
   return body;

@@ -1,5 +1,6 @@
 // A rigid body: what it is (shape, mass, material) and where it is (state).
 #pragma once
+#include "physics/planar.h"
 #include "physics/shape.h"
 
 #include <string>
@@ -24,6 +25,8 @@ struct BodyDef {
   Quat orientation = Quat::Identity();
   Vec3 velocity = Vec3::Zero();
   Vec3 angular_velocity = Vec3::Zero();
+  int planar_axis = kNotPlanar;  // moves in the plane through `position` normal to this world axis
+                                 // (0 x, 1 y, 2 z) and turns about it only (planar.h); static bodies ignore it
 };
 
 struct Body {
@@ -34,7 +37,8 @@ struct Body {
   Real inv_mass = 0;
   Mat3 inertia_local = Mat3::Zero();
   Mat3 inv_inertia_local = Mat3::Zero();
-  Mat3 inv_inertia_world = Mat3::Zero();  // R I^-1 R^T, refreshed every step
+  Mat3 inv_inertia_world = Mat3::Zero();  // R I^-1 R^T, refreshed every step (planar: the lock's, planar.h)
+  int planar_axis = kNotPlanar;           // a moving body's lock (BodyDef::planar_axis)
 
   Vec3 position = Vec3::Zero();
   Quat orientation = Quat::Identity();
@@ -46,6 +50,10 @@ struct Body {
 
   bool is_static() const { return inv_mass == 0; }
   void refresh_world_inertia() {
+    if (planar_axis != kNotPlanar) {
+      inv_inertia_world = planar_inverse_inertia(inertia_world(), planar_axis);
+      return;
+    }
     const Mat3 r = orientation.toRotationMatrix();
     inv_inertia_world = r * inv_inertia_local * r.transpose();
   }

@@ -6,6 +6,7 @@
 //   joints and the gyroscopic term (the sweeps use rows prepared from it).
 #pragma once
 #include "physics/math.h"
+#include "physics/planar.h"
 
 #include <vector>
 
@@ -28,6 +29,7 @@ struct BodyInertia {
   Quat orientation0 = Quat::Identity();   // at step start
   Vec3 inertia_local = Vec3::Zero();      // principal moments (boxes: the local axes)
   bool gyroscopic = false;
+  int planar_axis = kNotPlanar;           // the body's planar lock (planar.h)
 };
 
 // The solver's bodies by slot (ContactSolver::slots()), the last one a still one for the world.

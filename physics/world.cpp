@@ -130,6 +130,7 @@ void World::load_states() {
     BodyState& s = solver_bodies_.states[slot];
     s.v = body.velocity;
     s.w = body.angular_velocity;
+    hold_in_plane(s.v, s.w, body.planar_axis);  // a caller may have set the body's velocities
     s.dp.setZero();
     s.dq = Quat::Identity();
     // A sleeping body is not simulated: to the solver it is as good as static.
@@ -138,17 +139,22 @@ void World::load_states() {
     inertia.inv_inertia = body.awake ? body.inv_inertia_world : Mat3::Zero();
     inertia.inertia_local = body.inertia_local.diagonal();
     inertia.orientation0 = body.orientation;
-    inertia.gyroscopic = s.inv_mass > 0 && inertia.inertia_local.maxCoeff() - inertia.inertia_local.minCoeff() > 1e-9 * inertia.inertia_local.maxCoeff();
+    // A planar body turns about its axis only, and the lock takes the whole gyroscopic torque (planar.h).
+    inertia.planar_axis = body.planar_axis;
+    inertia.gyroscopic = s.inv_mass > 0 && body.planar_axis == kNotPlanar &&
+                         inertia.inertia_local.maxCoeff() - inertia.inertia_local.minCoeff() > 1e-9 * inertia.inertia_local.maxCoeff();
   });
 }
 
 void World::integrate_velocities(Real h) {
-  contact_solver_.for_each_slot([&](int slot) { integrate_velocity(solver_bodies_.states[slot], h); });
+  contact_solver_.for_each_slot([&](int slot) { integrate_velocity(solver_bodies_.states[slot], solver_bodies_.inertia[slot], h); });
 }
 
-void World::integrate_velocity(BodyState& s, Real h) const {
+// Gravity; a planar body's lock takes its part along the axis before any contact sees it.
+void World::integrate_velocity(BodyState& s, const BodyInertia& inertia, Real h) const {
   if (s.inv_mass == 0) return;
   s.v += settings_.gravity * h;
+  hold_in_plane(s.v, s.w, inertia.planar_axis);
 }
 
 void World::integrate_positions(Real h) {
@@ -213,6 +219,7 @@ void turn_free(const Vec3& inertia, const Quat& orientation0, Quat& dq, Vec3& w,
 // its middle axis flips for ever, and a fast thin one cannot gain energy.
 void World::integrate_position(BodyState& s, const BodyInertia& inertia, Real h) {
   if (s.inv_mass == 0) return;
+  hold_in_plane(s.v, s.w, inertia.planar_axis);  // what the contacts and joints left, in the plane
   s.dp += s.v * h;
   if (inertia.gyroscopic)
     turn_free(inertia.inertia_local, inertia.orientation0, s.dq, s.w, h, 0);
@@ -230,7 +237,13 @@ void World::store_states() {
       const BodyState& s = solver_bodies_.states[slot];
       body.velocity = s.v;
       body.angular_velocity = s.w;
-      body.position += s.dp;
+      Vec3 dp = s.dp;
+      if (body.planar_axis != kNotPlanar) {
+        // The relax pass's velocities, and a bounce's or a teaching page's shift, held in the plane.
+        hold_in_plane(body.velocity, body.angular_velocity, body.planar_axis);
+        dp[body.planar_axis] = 0;
+      }
+      body.position += dp;
       body.orientation = (s.dq * body.orientation).normalized();
     }
     // Every body, still ones too: a caller may have set a sleeping body's state between steps.

@@ -106,7 +106,7 @@ class World {
   TeachingImpulse respond_outside(const Contact& contact, RigidBody& a, RigidBody& b, Real penetration);
   void load_states();
   void integrate_velocities(Real h);
-  void integrate_velocity(BodyState& s, Real h) const;
+  void integrate_velocity(BodyState& s, const BodyInertia& inertia, Real h) const;
   static void integrate_position(BodyState& s, const BodyInertia& inertia, Real h);
   void integrate_positions(Real h);
   void store_states();

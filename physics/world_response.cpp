@@ -25,7 +25,7 @@ void World::respond(Real dt, Real h) {
 void World::solve_impulse(Real h) {
   for (int i = 0; i < substeps_; ++i)
     soft_step_.substep(contact_solver_, joints_.empty() ? nullptr : &joint_solver_, solver_bodies_, h,
-                       [&](int slot) { integrate_velocity(solver_bodies_.states[slot], h); },
+                       [&](int slot) { integrate_velocity(solver_bodies_.states[slot], solver_bodies_.inertia[slot], h); },
                        [&](int slot) { integrate_position(solver_bodies_.states[slot], solver_bodies_.inertia[slot], h); });
   contact_solver_.store_impulses();
 }

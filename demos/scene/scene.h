@@ -49,6 +49,7 @@ struct Scene {
   std::string title;
   double duration = 5;           // s of simulated time
   physics::WorldSettings world;
+  int planar_axis = physics::kNotPlanar;  // [world] planar: the lock of every moving body that names none
   std::vector<physics::BodyDef> bodies;
   std::vector<Colour> colours;  // one per body
   std::vector<physics::JointDef> joints;  // body indices into `bodies`

@@ -61,6 +61,7 @@ void read_body(const TableReader& top, const toml::table& table, int index, Scen
   def.orientation = rotation_from_degrees(r.vec3("rotation", Vec3::Zero()));
   def.velocity = r.vec3("velocity", def.velocity, kFastest, "m/s", kFastestWhy);
   def.angular_velocity = r.vec3("angular_velocity", def.angular_velocity, kFastestSpin, "rad/s", kFastestSpinWhy);
+  def.planar_axis = read_planar(r, scene.planar_axis);
   const Colour colour = r.colour("colour", def.is_static ? kStaticColour : kBodyPalette[index % std::size(kBodyPalette)]);
   r.finish();
   add_body(r, def, colour, scene);
@@ -86,6 +87,7 @@ void read_world(TableReader& top, Scene& scene) {
   TableReader r = top.child(*t, "[world]");
   auto& w = scene.world;
   w.gravity = r.vec3("gravity", w.gravity);
+  scene.planar_axis = read_planar(r, physics::kNotPlanar);
   w.time_step = 1 / r.number("step_rate", 1 / w.time_step, 1, 100000);
   w.substeps = r.integer("substeps", w.substeps, 1, 64);
   w.min_substeps = r.integer("min_substeps", w.min_substeps, 1, 64);
@@ -106,6 +108,15 @@ void read_world(TableReader& top, Scene& scene) {
   w.penalty.hertz = r.number("penalty_hertz", w.penalty.hertz, 0, 10000, true);
   w.penalty.damping_ratio = r.number("penalty_damping_ratio", w.penalty.damping_ratio, 0);
   r.finish();
+}
+
+int read_planar(TableReader& r, int fallback) {
+  // Each plane by the two axes it holds; the lock is about the third.
+  static constexpr std::string_view kPlanes[] = {"yz", "xz", "xy", "none"};
+  const std::string plane = r.choice("planar", std::string(fallback == physics::kNotPlanar ? kPlanes[3] : kPlanes[fallback]), kPlanes);
+  for (int axis = 0; axis < 3; ++axis)
+    if (plane == kPlanes[axis]) return axis;
+  return physics::kNotPlanar;
 }
 
 void read_material_kind(TableReader& r, Scene& scene, physics::BodyDef& def) {

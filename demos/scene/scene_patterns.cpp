@@ -21,6 +21,7 @@ physics::BodyDef base_body(TableReader& r, Scene& scene, const std::string& name
   def.material.restitution = r.number("restitution", 0, 0, 1);
   def.material.friction = r.number("friction", 0.6, 0);
   read_material_kind(r, scene, def);
+  def.planar_axis = read_planar(r, scene.planar_axis);
   return def;
 }
 
@@ -40,8 +41,12 @@ void read_pyramid(TableReader& r, Scene& scene) {
   }
 }
 
-// A count.x by count.y by count.z lattice of boxes or spheres with a seeded jitter and orientation.
-void read_lattice(TableReader& r, Scene& scene) {
+// A count.x by count.y by count.z lattice of boxes or spheres with a seeded jitter and orientation:
+// layers up the y axis, `position` the centre of the bottom layer (of its bodies' centres), the
+// bodies named "NAME 1", "NAME 2", ... layer by layer, along x, then z. The `number`th [[lattice]]
+// of the file is named "lattice" (the first) or "lattice NUMBER" unless it says.
+void read_lattice(TableReader& r, Scene& scene, int number) {
+  const std::string name = r.string("name", number == 1 ? "lattice" : "lattice " + std::to_string(number));
   const std::string shape = r.choice("shape", "box", {"box", "sphere"});
   const Vec3 count = r.vec3("count", Vec3(10, 10, 10));
   if (count.minCoeff() < 1 || count.prod() > 100000) r.fail(r.get("count"), "count", "each count must be >= 1, at most 100000 bodies");
@@ -53,21 +58,30 @@ void read_lattice(TableReader& r, Scene& scene) {
   const bool stagger = r.boolean("stagger", false);          // odd layers shifted by half a pitch
   const int seed = r.integer("seed", 1, 0, 1 << 30);
   physics::BodyDef def = base_body(r, scene, "");
+  def.is_static = r.boolean("static", false);
+  const bool coloured = r.has("colour");
+  const Colour colour = r.colour("colour", kStaticColour);
   r.finish();
   def.shape = shape == "box" ? physics::Shape::box(Vec3::Constant(size / 2)) : physics::Shape::sphere(size / 2);
   std::mt19937 random(seed);
   std::uniform_real_distribution<Real> unit(-1, 1);
   const int nx = int(count.x()), ny = int(count.y()), nz = int(count.z());
+  // A staggered layer shifts along the horizontal axes that have more than one body: a lattice one
+  // body deep (a Galton board's pegs) stays in its plane.
+  const Real shift_x = nx > 1 ? 0.5 : 0, shift_z = nz > 1 ? 0.5 : 0;
+  int made = 0;
   for (int layer = 0; layer < ny; ++layer)
     for (int i = 0; i < nx; ++i)
       for (int k = 0; k < nz; ++k) {
-        const Real shift = stagger && layer % 2 ? 0.5 : 0;
-        def.name = "lattice " + std::to_string(scene.bodies.size());
-        def.position = origin + Vec3(pitch.x() * (i - (nx - 1) / 2.0 + shift), pitch.y() * layer, pitch.z() * (k - (nz - 1) / 2.0 + shift)) +
+        const bool shifted = stagger && layer % 2;
+        def.name = name + " " + std::to_string(++made);
+        def.position = origin +
+                       Vec3(pitch.x() * (i - (nx - 1) / 2.0 + (shifted ? shift_x : 0)), pitch.y() * layer,
+                            pitch.z() * (k - (nz - 1) / 2.0 + (shifted ? shift_z : 0))) +
                        jitter * Vec3(unit(random), unit(random), unit(random));
         if (tumble) def.orientation = physics::Quat(unit(random), unit(random), unit(random), unit(random)).normalized();
         scene.bodies.push_back(def);
-        scene.colours.push_back(kBodyPalette[layer % kRowColourCount]);
+        scene.colours.push_back(coloured || def.is_static ? colour : kBodyPalette[layer % kRowColourCount]);
       }
 }
 
@@ -82,7 +96,7 @@ void read_patterns(TableReader& top, Scene& scene) {
   if (const toml::array* list = top.table_list("lattice"))
     for (size_t i = 0; i < list->size(); ++i) {
       TableReader r = top.child(*list->get(i)->as_table(), "[[lattice]] " + std::to_string(i + 1));
-      read_lattice(r, scene);
+      read_lattice(r, scene, int(i) + 1);
     }
 }
 

@@ -32,6 +32,9 @@ void read_bodies(TableReader& top, Scene& scene);  // [[body]]
 void read_patterns(TableReader& top, Scene& scene);  // [[pyramid]], [[lattice]]: many bodies at once
 void read_joints(TableReader& top, Scene& scene);  // [[joint]], after the bodies they name
 void read_material_pairs(TableReader& top, Scene& scene);  // [[material_pair]], after the bodies
+// A body's `planar = "xy"` (or "yz", "xz", "none"): the world axis its plane is normal to
+// (physics/planar.h), else `fallback`, the world's.
+int read_planar(TableReader& r, int fallback);
 // A body's `material = "NAME"`, if it has one: its kind (physics/materials.h), a new one for a new name.
 void read_material_kind(TableReader& r, Scene& scene, physics::BodyDef& def);
 void read_view(TableReader& top, Scene& scene);

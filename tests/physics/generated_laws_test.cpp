@@ -116,6 +116,32 @@ std::string drifts(Draw& draw) {
   return scene.str();
 }
 
+// A blackboard's collisions (planar = "xy"): spheres and boxes in the plane z = 0, boxes turned
+// about z only, frictionless, of any restitution, thrown at each other in zero gravity; each also
+// given a velocity out of the plane and a spin about x and y, which the lock takes at the start.
+std::string planar_collisions(Draw& draw) {
+  SceneText scene("planar collisions", 3.0);
+  scene.line("[world]\ngravity = [0, 0, 0]\nfriction = false\nplanar = \"xy\"");
+  Placement placement(draw, Vec3(-2, -2, 0), Vec3(2, 2, 0));
+  const int count = draw.integer(2, 8);
+  for (int i = 0; i < count; ++i) {
+    const double restitution = draw.uniform(0, 1), mass = draw.uniform(0.2, 5);
+    const Vec3 out_of_plane(0, 0, draw.uniform(-1, 1));
+    const Vec3 spin(draw.uniform(-3, 3), draw.uniform(-3, 3), draw.uniform(-6, 6));
+    if (draw.coin()) {
+      const double radius = draw.uniform(0.1, 0.4);
+      const Vec3 at = placement.place(radius);
+      scene.sphere(at, radius, mass, Vec3(-at.normalized() * draw.uniform(0.2, 4)) + out_of_plane, restitution, 0, spin);
+    } else {
+      const Vec3 size(draw.uniform(0.1, 0.8), draw.uniform(0.1, 0.8), draw.uniform(0.1, 0.8));
+      const Vec3 at = placement.place(size.norm() / 2);
+      scene.box(at, size, mass, Vec3(-at.normalized() * draw.uniform(0.2, 4)) + out_of_plane, spin, Vec3(0, 0, draw.uniform(0, 90)),
+                restitution, 0);
+    }
+  }
+  return scene.str();
+}
+
 // A pyramid of boxes (2 to 8 rows) of any size, mass and friction from 0.4, built as the
 // benchmark builds it (rows touching), sleeping off.
 std::string pyramid(Draw& draw) {
@@ -189,6 +215,26 @@ TEST(GeneratedLaws, WithoutExternalForcesMomentaAreKeptAndEnergyNeverRises) {
               return energy > start_energy * 1.01 ? breach_text("kinetic energy", energy, start_energy * 1.01)
                                                   : std::string();
             }));
+}
+
+// A planar scene's frictionless impacts: momentum in the plane and angular momentum about its
+// normal kept, the kinetic energy never rises, and every body stays in the plane (its z as it
+// started, to rounding), turning about z alone.
+TEST(GeneratedLaws, PlanarImpactsKeepMomentumInThePlane) {
+  const Law momenta = momenta_law([](double energy, double start_energy) {
+    return energy > start_energy * 1.01 ? breach_text("kinetic energy", energy, start_energy * 1.01) : std::string();
+  });
+  check_law("planar-collisions", 60, planar_collisions,
+            [momenta](const physics::World& world, const physics::StepRecord& start, const std::vector<physics::Body>& initial) {
+              for (size_t i = 0; i < initial.size(); ++i) {
+                const physics::Body& body = world.bodies()[i];
+                const double off = std::abs(body.position.z() - initial[i].position.z());
+                if (off > 1e-9) return breach_text(("body " + std::to_string(i + 1) + " left the plane by").c_str(), off, 1e-9);
+                const double tilt = std::hypot(body.angular_velocity.x(), body.angular_velocity.y());
+                if (tilt > 1e-12) return breach_text(("body " + std::to_string(i + 1) + " turns about x or y at").c_str(), tilt, 1e-12);
+              }
+              return momenta(world, start, initial);
+            });
 }
 
 // With gravity: kinetic plus potential energy never rises above its start (by more than 1 % of

@@ -253,5 +253,54 @@ restitution = 0.95
   EXPECT_DOUBLE_EQ(on_wall.restitution, 0.9);
 }
 
+// [world] planar locks every moving body (a pattern's too) unless the body's own planar says
+// otherwise; a plane that is not one is refused at its line, with the planes there are.
+TEST(SceneFile, PlanarLocksEveryMovingBodyUnlessItsOwnSaysOtherwise) {
+  const Scene scene = scene_of(
+      "[world]\nplanar = \"xy\"\n"
+      "[[body]]\nname = \"ball\"\nshape = \"sphere\"\n"
+      "[[body]]\nname = \"free\"\nshape = \"sphere\"\nposition = [2, 0, 0]\nplanar = \"none\"\n"
+      "[[body]]\nname = \"side\"\nshape = \"sphere\"\nposition = [4, 0, 0]\nplanar = \"yz\"\n"
+      "[[lattice]]\ncount = [2, 1, 1]\nposition = [0, 5, 0]\n");
+  ASSERT_EQ(scene.bodies.size(), 5u);
+  EXPECT_EQ(scene.bodies[0].planar_axis, 2);
+  EXPECT_EQ(scene.bodies[1].planar_axis, physics::kNotPlanar);
+  EXPECT_EQ(scene.bodies[2].planar_axis, 0);
+  EXPECT_EQ(scene.bodies[3].planar_axis, 2);
+  EXPECT_EQ(scene.bodies[4].planar_axis, 2);
+  EXPECT_EQ(scene_of("[[body]]\nshape = \"sphere\"\n").bodies[0].planar_axis, physics::kNotPlanar);
+  const std::string error = error_of("[world]\n\nplanar = \"x-y\"\n[[body]]\nshape = \"sphere\"\n");
+  EXPECT_NE(error.find(":3: [world] field 'planar': unknown value 'x-y'"), std::string::npos) << error;
+  EXPECT_NE(error.find("(known: yz, xz, xy, none)"), std::string::npos) << error;
+}
+
+// A lattice's bodies are named from 1 by its name; `position` is the middle of its bottom layer's
+// centres, `size` a sphere's diameter; `static` makes every body static; a staggered layer of a
+// lattice one body deep shifts along x alone, so it stays in its plane.
+TEST(SceneFile, ALatticeIsNamedFromOneAroundTheMiddleOfItsBottomLayerAndMayBeStatic) {
+  const Scene scene = scene_of(
+      "[[body]]\nname = \"ground\"\nshape = \"plane\"\n"
+      "[[lattice]]\nname = \"peg\"\nshape = \"sphere\"\nstatic = true\ncount = [3, 2, 1]\npitch = [0.2, 0.3, 1]\n"
+      "position = [1, 2, 0]\nsize = 0.05\nstagger = true\n"
+      "[[lattice]]\ncount = [1, 2, 1]\nposition = [5, 1, 0]\n");
+  ASSERT_EQ(scene.bodies.size(), 9u);
+  const double x[] = {0.8, 1.0, 1.2, 0.9, 1.1, 1.3};
+  for (int i = 0; i < 6; ++i) {
+    const physics::BodyDef& peg = scene.bodies[size_t(i) + 1];
+    EXPECT_EQ(peg.name, "peg " + std::to_string(i + 1));
+    EXPECT_TRUE(peg.is_static);
+    EXPECT_EQ(peg.shape.type, physics::ShapeType::sphere);
+    EXPECT_DOUBLE_EQ(peg.shape.radius, 0.025);
+    EXPECT_NEAR(peg.position.x(), x[i], 1e-12) << peg.name;
+    EXPECT_NEAR(peg.position.y(), i < 3 ? 2.0 : 2.3, 1e-12) << peg.name;
+    EXPECT_EQ(peg.position.z(), 0) << peg.name;
+  }
+  EXPECT_EQ(scene.bodies[7].name, "lattice 2 1");
+  EXPECT_EQ(scene.bodies[8].name, "lattice 2 2");
+  EXPECT_FALSE(scene.bodies[8].is_static);
+  EXPECT_EQ(scene.bodies[8].position, physics::Vec3(5, 3, 0));
+  EXPECT_EQ(scene_of("[[lattice]]\ncount = [1, 1, 1]\n").bodies[0].name, "lattice 1");
+}
+
 }  // namespace
 }  // namespace impulse::demos
