@@ -479,10 +479,10 @@ TEST(ImpactLaws, AFallingBoxNeverSinksFurtherThanAFrameShows) {
             [](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>&) { return sinks_within(world); });
 }
 
-// Not yet met (issue 39): 34 of 40 runs hold; in the others one domino's edge sliding down the
-// next as it turns (or a pivot edge under a fast-turning domino) sinks 5.0-5.6 mm, because a
-// step's rows keep its start's lever arms and normal while the point slides over a face that turns
-// (physics/README.md, "Not yet"). Run it with --gtest_also_run_disabled_tests.
+// Disabled until a step's rows follow a point that slides: one domino's edge sliding down the next
+// as both turn (or a pivot edge under a fast-turning domino) is measured by the rows of the step's
+// start and sinks past the limit (physics/README.md, "Not yet"). Run it with
+// --gtest_also_run_disabled_tests.
 TEST(ImpactLaws, DISABLED_DominoesNeverSinkFurtherThanAFrameShows) {
   check_law("domino-run", 40, domino_run,
             [](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>&) { return sinks_within(world); });
