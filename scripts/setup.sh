@@ -24,6 +24,7 @@ packages=(
   ffmpeg                                          # benchmark peer only (render_bench's naive path); impulse never runs it
   clang libclang-rt-14-dev                        # tests: the libFuzzer target (tests/fuzz; clang's fuzzer and sanitizer runtimes)
   llvm                                            # tests: llvm-symbolizer, for the sanitizers' stack traces
+  lld                                             # tests: the sanitizer builds' linker
   chromium python3                                # tests: the gallery opened in headless Chromium, served by Python's http.server
   slurmctld slurmd slurm-client munge             # tests: the Slurm example (docs/autograders/slurm) on a one-node Slurm
 )
