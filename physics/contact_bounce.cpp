@@ -115,8 +115,23 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   Real first_meeting = pressed ? 0 : h;
   for (int i = 0; i < m.count; ++i)
     if (hit[i]) first_meeting = std::min(first_meeting, hits[i].tau);
+  // Two spheres meet at that moment by its construction: the normal there turns to their line of
+  // centres, which may change how fast they close, not whether. Found again along it, a hit near
+  // the sub-step's end would otherwise fall past it and be left to the relax pass's inelastic rows.
+  const bool spheres = m.radius_a > 0 && m.radius_b > 0;
+  bool first[kMaxManifoldPoints] = {};
+  for (int i = 0; i < m.count; ++i) first[i] = spheres && hit[i] && hits[i].tau == first_meeting;
   const ImpactGeometry g = impact_geometry(m, points, sa, ia, sb, ib, first_meeting);
-  if (!find_hits(g)) return false;
+  bool any_hit = find_hits(g);
+  for (int i = 0; i < m.count; ++i) {
+    if (hit[i] || !first[i]) continue;
+    const Real vn = relative_velocity(sa, sb, g.ra[i], g.rb[i]).dot(g.normal);
+    const bool bounces = can_bounce && vn < -impact_threshold_;
+    hit[i] = (bounces || (unpressed && apart)) && meets_at(separation[i], vn, acceleration, bounces ? m.restitution : 0,
+                                                           bounces ? impact_threshold_ : landing_speed_, h, first_meeting, hits[i]);
+    any_hit = any_hit || hit[i];
+  }
+  if (!any_hit) return false;
   write_impact_rows(place, g, hit, separation, solver_bodies, true);
 
   // 3. The normal impulses, the points that meet together, Gauss-Seidel forwards and backwards so

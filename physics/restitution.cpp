@@ -60,6 +60,17 @@ bool meets(Real separation, Real vn, Real a, Real restitution, Real threshold, R
   return true;
 }
 
+bool meets_at(Real separation, Real vn, Real a, Real restitution, Real threshold, Real h, Real tau, Hit& hit) {
+  if (vn > -threshold) return false;
+  hit.gap = std::max(separation, Real(0));
+  hit.touch = touch_velocity(vn, hit.gap, a, h);
+  if (hit.touch >= 0) return false;
+  hit.tau = tau;
+  hit.u = -restitution * hit.touch;
+  hit.target = hit.u + a * (h / 2 - hit.tau);
+  return true;
+}
+
 ImpactGeometry impact_geometry(const ManifoldConstraint& m, const ContactConstraint* points, const BodyState& sa, const BodyInertia& ia,
                                const BodyState& sb, const BodyInertia& ib, Real tau) {
   ImpactGeometry g;

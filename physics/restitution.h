@@ -45,6 +45,9 @@ struct Hit {
 // Whether a point `separation` apart now, at normal velocity `vn` (this sub-step's gravity
 // included), meets within the sub-step closing faster than `threshold`; if so, `hit` says how.
 bool meets(Real separation, Real vn, Real a, Real restitution, Real threshold, Real h, Hit& hit);
+// The same for a point known to meet at `tau` (the first of its pair to meet, at the geometry of
+// that moment): how fast, if it closes faster than `threshold`.
+bool meets_at(Real separation, Real vn, Real a, Real restitution, Real threshold, Real h, Real tau, Hit& hit);
 
 // A pair at the moment its surfaces meet: the normal, and for each point the lever arms from each
 // body's centre to the point where the surfaces meet (eq. 13's r_a and r_b, r_a - r_b = x_b - x_a:
