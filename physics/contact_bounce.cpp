@@ -89,14 +89,17 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   Hit hits[kMaxManifoldPoints];
   bool hit[kMaxManifoldPoints] = {};
   Real acceleration = 0;  // gravity's, of A relative to B along the normal
-  auto find_hits = [&](const ImpactGeometry& g) {
+  // `meet_at_tau`: the points known to meet at `tau` (meets_at), if not found to meet before.
+  auto find_hits = [&](const ImpactGeometry& g, const bool* meet_at_tau = nullptr, Real tau = 0) {
     acceleration = ((sa.inv_mass > 0 ? gravity_ : Vec3::Zero()) - (sb.inv_mass > 0 ? gravity_ : Vec3::Zero())).dot(g.normal);
     bool any_hit = false;
     for (int i = 0; i < m.count; ++i) {
       const Real vn = relative_velocity(sa, sb, g.ra[i], g.rb[i]).dot(g.normal);
       const bool bounces = can_bounce && vn < -impact_threshold_;
+      const Real restitution = bounces ? m.restitution : 0, threshold = bounces ? impact_threshold_ : landing_speed_;
       hit[i] = (bounces || (unpressed && apart)) &&
-               meets(separation[i], vn, acceleration, bounces ? m.restitution : 0, bounces ? impact_threshold_ : landing_speed_, h, hits[i]);
+               (meets(separation[i], vn, acceleration, restitution, threshold, h, hits[i]) ||
+                (meet_at_tau && meet_at_tau[i] && meets_at(separation[i], vn, acceleration, restitution, threshold, h, tau, hits[i])));
       any_hit = any_hit || hit[i];
     }
     return any_hit;
@@ -122,16 +125,7 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   bool first[kMaxManifoldPoints] = {};
   for (int i = 0; i < m.count; ++i) first[i] = spheres && hit[i] && hits[i].tau == first_meeting;
   const ImpactGeometry g = impact_geometry(m, points, sa, ia, sb, ib, first_meeting);
-  bool any_hit = find_hits(g);
-  for (int i = 0; i < m.count; ++i) {
-    if (hit[i] || !first[i]) continue;
-    const Real vn = relative_velocity(sa, sb, g.ra[i], g.rb[i]).dot(g.normal);
-    const bool bounces = can_bounce && vn < -impact_threshold_;
-    hit[i] = (bounces || (unpressed && apart)) && meets_at(separation[i], vn, acceleration, bounces ? m.restitution : 0,
-                                                           bounces ? impact_threshold_ : landing_speed_, h, first_meeting, hits[i]);
-    any_hit = any_hit || hit[i];
-  }
-  if (!any_hit) return false;
+  if (!find_hits(g, first, first_meeting)) return false;
   write_impact_rows(place, g, hit, separation, solver_bodies, true);
 
   // 3. The normal impulses, the points that meet together, Gauss-Seidel forwards and backwards so
