@@ -124,10 +124,9 @@ TEST(HeadOn, ASpinningBallHitsAlongTheLineOfCentres) {
 
 // A touching rack of six equal balls in zero gravity, e = 1, frictionless, struck a little off
 // the line of centres: every pair the hit runs through meets elastically, so the kinetic energy
-// stays what the cue ball brought. The apex's two pairs meet near the end of a sub-step; found
-// again at the moment of contact, along the line of centres then, they fell past it and were
-// answered by the relax pass's inelastic rows: three quarters of the energy lost, at 4 to 16
-// sub-steps.
+// stays what the cue ball brought. The apex's two pairs meet near the end of a sub-step: they
+// bounce then, along the line of centres at that moment, rather than past the sub-step's end in
+// the relax pass's inelastic rows (restitution.h, meets_at).
 TEST(HeadOn, ATouchingRackStruckOffCentreKeepsItsEnergy) {
   for (int substeps : {4, 8, 12, 16}) {
     WorldSettings settings;
