@@ -33,6 +33,10 @@ namespace {
 // a chain of joints, need tens of passes to agree.
 constexpr Real kImpactTolerance = 1e-9;
 constexpr int kMostImpactPasses = 256;
+// A pair pressed last step (its warm start) if that impulse changed how fast it closes by more than
+// this share of the threshold: bodies resting under gravity press by g dt or more a step, where a
+// touching rack in zero gravity presses by its rounding alone (1e-17 N s).
+constexpr Real kPressedShare = 1e-3;
 
 bool done(Real change, Real largest) { return change <= kImpactTolerance * largest; }
 
@@ -59,13 +63,14 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   if (!block.can_bounce && !unpressed) return false;
   ManifoldConstraint& m = manifolds_[place];
   ContactConstraint* points = &constraints_[m.first];
+  bool pressed = false;
+  for (int i = 0; i < m.count; ++i)
+    pressed = pressed || points[i].normal_impulse > kPressedShare * impact_threshold_ * rows[i].normal_mass[l];
   // A pair bounces again in the same step (a later impact of a pack closing it again) only if it
   // did not press last step. One that did is held by a load (the rows of a tall pyramid, whose
   // soft contacts close at over 0.5 m/s as it settles): bounced over and over within a step it
   // pumps the stack up; once, as every pair may, it does not.
-  if (m.bounce_speed > 0)
-    for (int i = 0; i < m.count; ++i)
-      if (points[i].normal_impulse > 0) return false;
+  if (m.bounce_speed > 0 && pressed) return false;
   const bool can_bounce = block.can_bounce && m.restitution > 0;
   if (!can_bounce && !unpressed) return false;
   BodyState& sa = solver_bodies.states[m.a];
@@ -113,8 +118,6 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   }
   // A pair that pressed last step is in contact already: its moment of contact is now (a box
   // rocking onto its other edge, a settling stack), and its bodies' motion stays the solver's.
-  bool pressed = false;
-  for (int i = 0; i < m.count; ++i) pressed = pressed || points[i].normal_impulse > 0;
   Real first_meeting = pressed ? 0 : h;
   for (int i = 0; i < m.count; ++i)
     if (hit[i]) first_meeting = std::min(first_meeting, hits[i].tau);

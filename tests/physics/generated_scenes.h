@@ -2,7 +2,9 @@
 // (load_scene, build_world) and stepped, the law checked at every step. A case that breaks its law
 // prints its seed and the path of its scene file, kept for `impulse simulate FILE` to replay. The
 // generators draw their numbers from std::mt19937_64's raw output, which the standard fixes bit
-// for bit, so a seed is the same scene on every machine.
+// for bit, so a seed is the same scene on every machine, and with every compiler: draws are
+// taken one statement (or one declarator) at a time, never two in one call's arguments or one
+// operator's operands, whose order C++ leaves to the compiler (Draw::vector, vector_of_length).
 //
 //   IMPULSE_LAW_SEEDS=N  cases per law (default: each law's); IMPULSE_LAW_FIRST_SEED=S  start at seed S.
 #pragma once
@@ -41,6 +43,13 @@ class Draw {
   double uniform(double low, double high) { return low + (high - low) * double(bits_() >> 11) * 0x1.0p-53; }
   int integer(int low, int high) { return low + int(bits_() % uint64_t(high - low + 1)); }  // low..high
   bool coin() { return bits_() & 1; }
+  Vec3 vector(const Vec3& low, const Vec3& high) {  // x, then y, then z
+    const double x = uniform(low.x(), high.x());
+    const double y = uniform(low.y(), high.y());
+    const double z = uniform(low.z(), high.z());
+    return Vec3(x, y, z);
+  }
+  Vec3 vector(double low, double high) { return vector(Vec3::Constant(low), Vec3::Constant(high)); }
 
  private:
   std::mt19937_64 bits_;
@@ -94,15 +103,24 @@ class SceneText {
 // A direction drawn evenly over the sphere (or the circle in the x-y plane).
 inline Vec3 direction(Draw& draw, bool flat) {
   for (;;) {
-    Vec3 v(draw.uniform(-1, 1), draw.uniform(-1, 1), flat ? 0.0 : draw.uniform(-1, 1));
+    const double x = draw.uniform(-1, 1);
+    const double y = draw.uniform(-1, 1);
+    const Vec3 v(x, y, flat ? 0.0 : draw.uniform(-1, 1));
     const double length = v.norm();
     if (length > 0.1 && length <= 1) return v / length;
   }
 }
 
+// A direction, then a length from low to high.
+inline Vec3 vector_of_length(Draw& draw, double low, double high) {
+  const Vec3 along = direction(draw, false);
+  return along * draw.uniform(low, high);
+}
+
 // A velocity of 0.2 to 4 m/s toward the middle of the scene, a little off.
 inline Vec3 toward_middle(Draw& draw, const Vec3& at) {
-  return -at.normalized() * draw.uniform(0.2, 4) + direction(draw, false) * draw.uniform(0, 0.5);
+  const double speed = draw.uniform(0.2, 4);
+  return -at.normalized() * speed + vector_of_length(draw, 0, 0.5);
 }
 
 // Places bodies of the given bounding radii at random in a region, none overlapping another
@@ -113,8 +131,7 @@ class Placement {
   Placement(Draw& draw, Vec3 low, Vec3 high) : draw_(draw), low_(low), high_(high) {}
   Vec3 place(double radius) {
     for (int attempt = 0; attempt < 1000; ++attempt) {
-      const Vec3 at(draw_.uniform(low_.x(), high_.x()), draw_.uniform(low_.y(), high_.y()),
-                    draw_.uniform(low_.z(), high_.z()));
+      const Vec3 at = draw_.vector(low_, high_);
       bool clear = true;
       for (const auto& [centre, r] : placed_) clear = clear && (at - centre).norm() > r + radius + 0.01;
       if (!clear) continue;
@@ -171,6 +188,19 @@ inline std::string run_case(const std::string& name, uint64_t seed, const std::s
   return "";
 }
 
+inline Draw draw_for(const std::string& name, uint64_t seed) { return Draw(seed * 0x9E3779B97F4A7C15ull + name.size()); }
+
+// FNV-1a over the text of a generator's scenes for seeds 1..count: a constant of the test, the
+// same from every build (GCC's and clang's order their draws alike only as the header says).
+inline uint64_t scenes_hash(const std::string& name, const std::function<std::string(Draw&)>& generate, int count = 20) {
+  uint64_t hash = 0xcbf29ce484222325ull;
+  for (uint64_t seed = 1; seed <= uint64_t(count); ++seed) {
+    Draw draw = draw_for(name, seed);
+    for (const char c : generate(draw)) hash = (hash ^ uint8_t(c)) * 0x100000001b3ull;
+  }
+  return hash;
+}
+
 // Generates `default_count` scenes (IMPULSE_LAW_SEEDS) and checks the law in each.
 inline void check_law(const std::string& name, int default_count, const std::function<std::string(Draw&)>& generate,
                const Law& law) {
@@ -178,7 +208,7 @@ inline void check_law(const std::string& name, int default_count, const std::fun
   const int count = seeds_per_law(default_count);
   int held = 0;
   for (uint64_t seed = first; seed < first + uint64_t(count); ++seed) {
-    Draw draw(seed * 0x9E3779B97F4A7C15ull + name.size());
+    Draw draw = draw_for(name, seed);
     const std::string breach = run_case(name, seed, generate(draw), law);
     if (breach.empty())
       ++held;

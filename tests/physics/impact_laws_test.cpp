@@ -146,23 +146,24 @@ std::string thrown_at_a_surface(Draw& draw) {
              << SceneText::number(offset) << "\n" << material;
       on_surface = n * offset + n.unitOrthogonal() * draw.uniform(-1, 1);
     } else {
-      const Vec3 degrees(draw.uniform(0, 360), draw.uniform(0, 360), draw.uniform(0, 360));
-      const Vec3 centre(draw.uniform(-1, 1), draw.uniform(-1, 1), draw.uniform(-1, 1));
+      const Vec3 degrees = draw.vector(0, 360);
+      const Vec3 centre = draw.vector(-1, 1);
       bodies << "[[body]]\nname = \"surface\"\nshape = \"box\"\nstatic = true\nsize = [3, 0.4, 3]\nrotation = "
              << SceneText::vector(degrees) << "\nposition = " << SceneText::vector(centre) << "\n" << material;
       const Mat3 r = from_degrees(degrees).toRotationMatrix();
       n = r.col(1);
-      on_surface = centre + r * Vec3(draw.uniform(-0.6, 0.6), 0.2, draw.uniform(-0.6, 0.6));
+      const double x = draw.uniform(-0.6, 0.6), z = draw.uniform(-0.6, 0.6);
+      on_surface = centre + r * Vec3(x, 0.2, z);
     }
     const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
     const double angle = draw.uniform(0, 2 * M_PI);
     const Vec3 sideways = (std::cos(angle) * t1 + std::sin(angle) * t2) * draw.uniform(0, 4);
     const Vec3 velocity = -n * draw.uniform(1, 6) + sideways;
-    const Vec3 spin = direction(draw, false) * draw.uniform(0, 10);
+    const Vec3 spin = vector_of_length(draw, 0, 10);
     const double mass = draw.uniform(0.2, 5), t_hit = draw.uniform(0.05, 0.25);
     const bool sphere = draw.coin();
     const double size = sphere ? draw.uniform(0.05, 0.4) : draw.uniform(0.1, 0.6);
-    const Vec3 degrees(draw.uniform(0, 360), draw.uniform(0, 360), draw.uniform(0, 360));
+    const Vec3 degrees = draw.vector(0, 360);
     // Placed so that, moving freely, its lowest point would reach `on_surface` after t_hit.
     physics::Body body;
     body.shape = sphere ? physics::Shape::sphere(size / 2) : physics::Shape::box(Vec3::Constant(size / 2));
@@ -273,7 +274,7 @@ std::string jointed_impact(Draw& draw) {
            << SceneText::vector(velocity) << "\nangular_velocity = " << SceneText::vector(spin) << "\n" << material;
     };
     const int kind = draw.integer(0, 3);  // pendulum on a rod, rigid pendulum, seesaw, chain
-    const double omega = draw.uniform(1, 5) * (draw.coin() ? 1 : -1);
+    const double speed = draw.uniform(1, 5), omega = draw.coin() ? speed : -speed;
     const Vec3 turning(0, 0, omega);
     const double free_radius = draw.uniform(0.05, 0.25), free_mass = draw.uniform(0.2, 5);
     if (kind == 2) {
@@ -287,8 +288,9 @@ std::string jointed_impact(Draw& draw) {
       double along = draw.uniform(-0.45, 0.45) * length - hinge;
       if (std::abs(along) < 0.1) continue;
       const double fall = draw.uniform(1, 5), t_hit = draw.uniform(0.05, 0.25);
-      ball("free", Vec3(along + draw.uniform(-0.5, 0.5) * t_hit, 0.025 + free_radius + fall * t_hit, draw.uniform(-0.1, 0.1)), free_radius,
-           free_mass, Vec3(draw.uniform(-0.5, 0.5), -fall, 0), Vec3::Zero());
+      const double drift = draw.uniform(-0.5, 0.5), z = draw.uniform(-0.1, 0.1), vx = draw.uniform(-0.5, 0.5);
+      ball("free", Vec3(along + drift * t_hit, 0.025 + free_radius + fall * t_hit, z), free_radius, free_mass, Vec3(vx, -fall, 0),
+           Vec3::Zero());
       return text.str();
     }
     // The free ball on the jointed ball's circle (a little off it: an oblique hit), ahead of it.
@@ -387,16 +389,16 @@ std::string flat_landing(Draw& draw) {
   std::ostringstream text;
   text << "[scene]\ntitle = \"flat landing\"\nduration = 2.0\n[world]\nsleeping = false\n";
   const bool on_box = draw.coin();
-  const Vec3 size(draw.uniform(0.1, 1.5), draw.uniform(0.05, 1), draw.uniform(0.1, 1.5));
+  const Vec3 size = draw.vector(Vec3(0.1, 0.05, 0.1), Vec3(1.5, 1, 1.5));
   const double floor = on_box ? 0.5 : 0;
   if (on_box)
     text << "[[body]]\nname = \"floor\"\nshape = \"box\"\nstatic = true\nsize = [6, 1, 6]\nrotation = [0, "
          << SceneText::number(draw.uniform(0, 90)) << ", 0]\n" << material;
   else
     text << "[[body]]\nname = \"floor\"\nshape = \"plane\"\nnormal = [0, 1, 0]\noffset = 0\n" << material;
+  const double mass = draw.uniform(0.2, 20), x = draw.uniform(-1, 1), lift = draw.uniform(0.2, 2), z = draw.uniform(-1, 1);
   text << "[[body]]\nname = \"box\"\nshape = \"box\"\nsize = " << SceneText::vector(size) << "\nmass = "
-       << SceneText::number(draw.uniform(0.2, 20)) << "\nposition = "
-       << SceneText::vector(Vec3(draw.uniform(-1, 1), floor + size.y() / 2 + draw.uniform(0.2, 2), draw.uniform(-1, 1)))
+       << SceneText::number(mass) << "\nposition = " << SceneText::vector(Vec3(x, floor + size.y() / 2 + lift, z))
        << "\nrotation = [0, " << SceneText::number(draw.uniform(0, 360)) << ", 0]\n" << material;
   return text.str();
 }
@@ -444,12 +446,13 @@ std::string dropped_box(Draw& draw) {
          << SceneText::number(draw.uniform(0, 90)) << ", 0]\n";
   else
     text << "[[body]]\nname = \"floor\"\nshape = \"plane\"\n";
-  const Vec3 size(draw.uniform(0.05, 1.2), draw.uniform(0.05, 1.2), draw.uniform(0.05, 1.2));
+  const Vec3 size = draw.vector(0.05, 1.2);
+  const double mass = draw.uniform(0.1, 20), x = draw.uniform(-1, 1), lift = draw.uniform(0.05, 2), z = draw.uniform(-1, 1);
+  const Vec3 degrees = draw.vector(0, 360);
   text << "[[body]]\nname = \"box\"\nshape = \"box\"\nsize = " << SceneText::vector(size) << "\nmass = "
-       << SceneText::number(draw.uniform(0.1, 20)) << "\nposition = "
-       << SceneText::vector(Vec3(draw.uniform(-1, 1), floor + size.norm() / 2 + draw.uniform(0.05, 2), draw.uniform(-1, 1)))
-       << "\nrotation = " << SceneText::vector(Vec3(draw.uniform(0, 360), draw.uniform(0, 360), draw.uniform(0, 360)))
-       << "\nangular_velocity = " << SceneText::vector(direction(draw, false) * draw.uniform(0, 6)) << "\n";
+       << SceneText::number(mass) << "\nposition = " << SceneText::vector(Vec3(x, floor + size.norm() / 2 + lift, z))
+       << "\nrotation = " << SceneText::vector(degrees)
+       << "\nangular_velocity = " << SceneText::vector(vector_of_length(draw, 0, 6)) << "\n";
   return text.str();
 }
 
@@ -486,6 +489,15 @@ TEST(ImpactLaws, AFallingBoxNeverSinksFurtherThanAFrameShows) {
 TEST(ImpactLaws, DISABLED_DominoesNeverSinkFurtherThanAFrameShows) {
   check_law("domino-run", 40, domino_run,
             [](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>&) { return sinks_within(world); });
+}
+
+// As GeneratedLaws.ASeedIsTheSameSceneWhateverTheCompiler, for these generators.
+TEST(ImpactLaws, ASeedIsTheSameSceneWhateverTheCompiler) {
+  EXPECT_EQ(scenes_hash("thrown-at-a-surface", thrown_at_a_surface), 0xb4b76883686a2280ull);
+  EXPECT_EQ(scenes_hash("jointed-impact", jointed_impact), 0x118ecea6956f26dcull);
+  EXPECT_EQ(scenes_hash("flat-landing", flat_landing), 0x99a300c4ae853500ull);
+  EXPECT_EQ(scenes_hash("dropped-box", dropped_box), 0x60e9500a1cb4bda8ull);
+  EXPECT_EQ(scenes_hash("domino-run", domino_run), 0x9a15b24bd9f0b70aull);
 }
 
 }  // namespace

@@ -154,5 +154,35 @@ TEST(HeadOn, ATouchingRackStruckOffCentreKeepsItsEnergy) {
   }
 }
 
+// A touching rack of fifteen in zero gravity, e = 1, frictionless, struck off-centre: its pairs
+// press each other by rounding alone (1e-17 N s) while it waits, which is no load. A pair the hit
+// runs through bounces, and bounces again when a later hit closes it within the same step, as
+// any pair no load holds together may; so the energy the cue ball brought stays.
+TEST(HeadOn, ARackPressedByRoundingAloneBouncesAgainWithinAStep) {
+  WorldSettings settings;
+  settings.gravity = Vec3::Zero();
+  settings.sleep.enabled = false;
+  World world(settings);
+  const Real radius = 0.029340411493691702, mass = 0.31242112310010761, pitch = 2 * radius;
+  const Real row_pitch = pitch * std::sqrt(Real(3)) / 2;
+  BodyDef ball;
+  ball.shape = Shape::sphere(radius);
+  ball.mass = mass;
+  ball.material = {1, 0};
+  for (int row = 0; row < 5; ++row)
+    for (int k = 0; k <= row; ++k) {
+      ball.position = Vec3(row * row_pitch, (k - row / Real(2)) * pitch, 0);
+      world.add_body(ball);
+    }
+  ball.position = Vec3(-0.22543756880277716, 0.041357740962815193, 0);
+  ball.velocity = Vec3(6.4145629115814371, -1.1767862503829423, 0);
+  world.add_body(ball);
+  const Real energy = 0.5 * mass * ball.velocity.squaredNorm();
+  for (int step = 0; step < 12; ++step) world.step();
+  Real after = 0;
+  for (const Body& body : world.bodies()) after += 0.5 * mass * body.velocity.squaredNorm();
+  EXPECT_NEAR(after / energy, 1, 1e-3);
+}
+
 }  // namespace
 }  // namespace impulse::physics
