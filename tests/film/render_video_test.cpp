@@ -1,6 +1,7 @@
 // The MP4 as a viewer gets it, decoded back through libavcodec: frame count, size and frame
 // rate, the colours where a known body and the background are, and an impulse arrow where the
 // contact is. Scenes are small (320x240, one second) to keep CI short.
+#include "demos/film/film.h"
 #include "demos/film/render_scene.h"
 #include "demos/film/render_types.h"
 #include "demos/scene/scene_file.h"
@@ -90,6 +91,32 @@ TEST(RenderVideo, DecodedBackHasTheFramesSizeRateAndColours) {
     EXPECT_NEAR(in_sky.b, 0.97 * 255, 12);
     EXPECT_GT(on_ball.r, on_ball.b + 100) << "orange: " << on_ball.r << "," << on_ball.g << "," << on_ball.b;
     EXPECT_GT(on_ball.r, 150);
+  }
+}
+
+// Two panes side by side (`impulse compare`'s film), each its own scene drawn into its half of
+// every frame, through the same threads as one pane (picturing, drawing, encoding).
+TEST(RenderVideo, TwoPanesShowEachItsOwnScene) {
+  const fs::path dir = scratch("panes");
+  const demos::Scene orange = scene_from(scratch("pane_orange"), resting_ball(kNoMarks));
+  std::string blue_text = resting_ball(kNoMarks);
+  blue_text.replace(blue_text.find("#e69f00"), 7, "#0072b2");
+  const demos::Scene blue = scene_from(scratch("pane_blue"), blue_text);
+  demos::RenderOptions options;
+  options.video_path = (dir / "panes.mp4").string();
+  demos::render_panes({{&orange, "orange"}, {&blue, "blue"}}, options);
+
+  const testing::DecodedVideo video = testing::decode_video(options.video_path);
+  ASSERT_EQ(video.frames.size(), 30u);
+  const demos::PaneLayout layout = demos::pane_layout(2, 320, 240, false, false);
+  ASSERT_EQ(layout.origins.size(), 2u);
+  const render::CameraView view = render::make_camera_view(demos::to_render(orange.camera), layout.width, layout.height);
+  const Eigen::Vector2f ball = *view.to_pixels({-0.18f, 0.72f, 0.36f});
+  for (const render::Frame& frame : {video.frames.front(), video.frames.back()}) {
+    const Rgb left = pixel(frame, layout.origins[0].cast<float>() + ball);
+    const Rgb right = pixel(frame, layout.origins[1].cast<float>() + ball);
+    EXPECT_GT(left.r, left.b + 100) << "orange: " << left.r << "," << left.g << "," << left.b;
+    EXPECT_GT(right.b, right.r + 100) << "blue: " << right.r << "," << right.g << "," << right.b;
   }
 }
 
