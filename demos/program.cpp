@@ -154,9 +154,12 @@ int render_loaded(const Comparison& loaded, demos::RenderOptions options, bool p
     if (!options.png_directory.empty()) std::fprintf(stderr, "wrote frames to %s/\n", options.png_directory.c_str());
     return report_checks(loaded.paths.front(), checks);
   }
+  std::vector<std::string> warnings;
+  options.on_warning = [&warnings](const std::string& warning) { warnings.push_back(warning); };
   const std::vector<std::vector<demos::CheckResult>> checks = demos::render_panes(loaded.panes, options);
   bar.finish();
   std::fprintf(stderr, "wrote %s\n", options.video_path.c_str());
+  for (const std::string& warning : warnings) std::fprintf(stderr, "impulse: warning: %s\n", warning.c_str());
   int exit_code = 0;
   for (size_t i = 0; i < checks.size(); ++i)
     exit_code = std::max(exit_code, report_checks(loaded.paths[i] + " [" + loaded.panes[i].label + "]", checks[i]));

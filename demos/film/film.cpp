@@ -59,6 +59,14 @@ Film::Film(const std::vector<Pane>& panes, int width, int height, const Shots& s
   pictures_.resize(panes.size());
 }
 
+std::vector<std::pair<int, int>> Film::identical_panes() const {
+  std::vector<std::pair<int, int>> pairs;
+  for (size_t p = 0; p < films_.size(); ++p)
+    for (size_t q = p + 1; q < films_.size(); ++q)
+      if (films_[p]->motion_hash() == films_[q]->motion_hash()) pairs.emplace_back(int(p), int(q));
+  return pairs;
+}
+
 std::vector<std::vector<CheckResult>> Film::check_results() const {
   std::vector<std::vector<CheckResult>> results;
   for (const auto& film : films_) results.push_back(film->check_results());

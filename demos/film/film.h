@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace impulse::demos {
@@ -60,6 +61,8 @@ class Film {
   std::vector<double> impact_times() const;  // every pane's, in order: s of simulated time
   const PaneLayout& layout() const { return layout_; }
   std::vector<std::vector<CheckResult>> check_results() const;  // each pane's scene's [[check]]s
+  // Each pair of panes (numbered from 0) whose worlds moved alike, step for step, so far.
+  std::vector<std::pair<int, int>> identical_panes() const;
   void next(FilmPicture& picture);  // the next picture, from 0 up to picture_count() - 1
 
  private:

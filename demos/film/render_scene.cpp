@@ -268,6 +268,11 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   if (encoder && !scene.captions.empty()) write_captions(scene, film, captions_path(options.video_path));
   if (encoder) write_chapters(scene, film, chapters_path(options.video_path));
   if (!options.poster_path.empty() && !poster_frame.rgba.empty()) render::write_png(options.poster_path, poster_frame);
+  if (options.on_warning)
+    for (const auto& [p, q] : film.identical_panes())
+      options.on_warning("panes " + std::to_string(p + 1) + " (" + panes[p].label + ") and " + std::to_string(q + 1) + " (" +
+                         panes[q].label + ") moved alike, step for step: what differs between them changes nothing in this "
+                         "scene; vary something the bodies feel here");
   return film.check_results();
 }
 

@@ -32,6 +32,9 @@ struct RenderOptions {
                                    // once the video is complete; empty: none
   // Called after each frame is drawn, with the frames finished and the frame count.
   std::function<void(int frames_done, int frame_count)> progress;
+  // Called, once the video is complete, with what a viewer should know that the frames do not
+  // say: panes that moved alike step for step (what differs between them changes nothing shown).
+  std::function<void(const std::string& warning)> on_warning;
   render::RendererSettings renderer;
 };
 

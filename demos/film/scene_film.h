@@ -73,6 +73,7 @@ class SceneFilm {
   int poster_frame() const { return poster_frame(labelled_peak_); }
   const std::vector<double>& impact_times() const { return impact_times_; }  // s: those that slow the video
   std::vector<CheckResult> check_results() const { return take_.check_results(); }
+  uint64_t motion_hash() const { return take_.motion_hash(); }  // WorldTake::motion_hash
   // The bodies as built: names, shapes (their motion is in the pictures).
   const std::vector<physics::Body>& bodies() const { return take_.bodies(); }
   // Fills `picture` with the next picture (from 0 up to picture_count() - 1).

@@ -4,6 +4,7 @@
 #include "demos/scene/scene_world.h"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 
 namespace impulse::demos {
@@ -69,6 +70,15 @@ void WorldTake::step() {
     for (const physics::Body& body : bodies)
       if (!body.is_static()) summary_.largest_speed = std::max(summary_.largest_speed, double(body.velocity.norm()));
   }
+  for (const physics::Body& body : bodies)
+    for (const physics::Real x : {body.position.x(), body.position.y(), body.position.z(), body.orientation.w(),
+                                  body.orientation.x(), body.orientation.y(), body.orientation.z(), body.velocity.x(),
+                                  body.velocity.y(), body.velocity.z(), body.angular_velocity.x(), body.angular_velocity.y(),
+                                  body.angular_velocity.z()}) {
+      uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      motion_hash_ = (motion_hash_ ^ bits) * 0x100000001b3ull;
+    }
   plots_.add_step(record, bodies);
   if (needs_summary(scene_)) summary_.plot_maxima = plots_.maxima();
 

@@ -11,6 +11,7 @@
 #include "demos/film/take_summary.h"
 #include "physics/world.h"
 
+#include <cstdint>
 #include <deque>
 #include <vector>
 
@@ -39,6 +40,9 @@ class WorldTake {
   void sample(double time, double video_time, FrameSample& sample);
 
   const TakeSummary& summary() const { return summary_; }
+  // FNV-1a over the bits of every body's position, orientation and velocities after each step
+  // taken: two takes that moved alike, step for step, have the same.
+  uint64_t motion_hash() const { return motion_hash_; }
   std::vector<CheckResult> check_results() const { return checks_.results(); }  // the scene's [[check]]s
   const PlotRecorder& plots() const { return plots_; }
   // The bodies as built (shapes, names, masses; their motion is in the samples) and the joints.
@@ -77,6 +81,7 @@ class WorldTake {
   std::vector<char> awake_;
   std::vector<ImpactNumbers> impacts_;  // for eq. 8 on screen, in time order
   size_t impacts_shown_ = 0;            // those at or before the last sample
+  uint64_t motion_hash_ = 0xcbf29ce484222325ull;
 };
 
 }  // namespace impulse::demos

@@ -88,6 +88,22 @@ TEST(Compare, PanesDifferWhereTheSettingDiffersAndAgreeWhereItDoesNot) {
   }
   // Before the first bounce the worlds are the same.
   EXPECT_LT(differing_pixels(decoded.frames[5], layout, true), 20);
+  EXPECT_EQ(result.stderr_text.find("moved alike"), std::string::npos) << result.stderr_text;
+}
+
+// Friction varied where nothing slides (two balls dropped straight down): the panes move alike,
+// step for step, and the lecturer is told so, with the panes' labels, as the video is written.
+TEST(Compare, PanesThatMoveAlikeAreNamedInAWarning) {
+  const fs::path dir = work_directory();
+  std::ofstream(dir / "balls.toml") << kTwoBalls;
+  const fs::path video = dir / "balls.mp4";
+  const testing::ProgramRun result =
+      run_in_process({"-q", "compare", (dir / "balls.toml").string(), "--vary", "world.friction=true,false", "-o", video.string()});
+  ASSERT_TRUE(result.succeeded()) << result.describe();
+  EXPECT_TRUE(fs::exists(video));
+  EXPECT_NE(result.stderr_text.find("warning: panes 1 (world.friction = true) and 2 (world.friction = false) moved alike, step for step"),
+            std::string::npos)
+      << result.stderr_text;
 }
 
 TEST(Compare, ABadVaryIsRefusedSayingWhy) {
