@@ -32,10 +32,18 @@ struct BodyInertia {
   int planar_axis = kNotPlanar;           // the body's planar lock (planar.h)
 };
 
+// A body's velocities changed by the contacts' warm start of the sub-step (contact_warm_start.cpp):
+// last sub-step's impulses applied again, a load carried on, not an approach (contact_bounce.cpp).
+struct WarmStartChange {
+  Vec3 dv = Vec3::Zero();
+  Vec3 dw = Vec3::Zero();
+};
+
 // The solver's bodies by slot (ContactSolver::slots()), the last one a still one for the world.
 struct SolverBodies {
   std::vector<BodyState> states;
   std::vector<BodyInertia> inertia;
+  std::vector<WarmStartChange> warm;  // this sub-step's, zeroed with the velocities' integration
 };
 
 // Changes a moving body's velocities. A still body's (static or asleep) is not even written: the

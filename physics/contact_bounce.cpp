@@ -1,7 +1,8 @@
 // The bounce stage of the default method's sub-steps (soft_step.h; restitution.h has its kernels):
 // in the sub-step in which a manifold's points meet faster than the threshold, answered at the
 // moment of contact, listing 1's way with its equations corrected:
-//   1. the hits: which points meet within the sub-step, when, and at what normal velocity;
+//   1. the hits: which points meet within the sub-step, when, and at what normal velocity (the
+//      bodies' own: the slower of it with and without what this sub-step's warm start added);
 //   2. the pair at the moment the first meets: the lever arms to where the surfaces meet, from
 //      which the manifold's rows are written again for the rest of the step;
 //   3. the normal impulses of all the points that meet, together, to e times the velocity at which
@@ -45,6 +46,15 @@ Real normal_velocity(const BodyState& sa, const BodyState& sb, const Vec3& norma
   return (sa.v - sb.v).dot(normal) + sa.w.dot(lane(p.ra_cross_n, l)) - sb.w.dot(lane(p.rb_cross_n, l));
 }
 
+// What this sub-step's warm start added to a point's normal velocity, from its rows in lane l, or
+// at lever arms ra, rb.
+Real warm_normal_velocity(const WarmStartChange& a, const WarmStartChange& b, const Vec3& normal, const PointLanes& p, int l) {
+  return (a.dv - b.dv).dot(normal) + a.dw.dot(lane(p.ra_cross_n, l)) - b.dw.dot(lane(p.rb_cross_n, l));
+}
+Real warm_normal_velocity(const WarmStartChange& a, const WarmStartChange& b, const Vec3& normal, const Vec3& ra, const Vec3& rb) {
+  return (a.dv + a.dw.cross(ra) - b.dv - b.dw.cross(rb)).dot(normal);
+}
+
 // `tangent` made perpendicular to `normal` again, turned as little as it can be.
 Vec3 across(const Vec3& tangent, const Vec3& normal) { return (tangent - tangent.dot(normal) * normal).normalized(); }
 
@@ -77,9 +87,20 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   BodyState& sb = solver_bodies.states[m.b];
   const BodyInertia& ia = solver_bodies.inertia[m.a];
   const BodyInertia& ib = solver_bodies.inertia[m.b];
+  // An approach is the bodies' own, with and without what this sub-step's warm start added (a
+  // load carried on: last sub-step's impulses again, which the soft rows answer): the slower of the
+  // two. Taken for an approach, a load's push would be returned with the restitution (a light box
+  // pinched between two heavy balls, its contacts' impulses thrown back and forth between them,
+  // gained energy sub-step after sub-step); without the push that holds a pair apart, a heap's
+  // resting pairs would bounce on top of it and never settle.
+  const WarmStartChange& warm_a = solver_bodies.warm[size_t(m.a)];
+  const WarmStartChange& warm_b = solver_bodies.warm[size_t(m.b)];
   const Real fast_enough = unpressed ? landing_speed_ : impact_threshold_;
   bool closing = false;
-  for (int i = 0; i < m.count && !closing; ++i) closing = normal_velocity(sa, sb, m.normal, rows[i], l) < -fast_enough;
+  for (int i = 0; i < m.count && !closing; ++i) {
+    const Real vn = normal_velocity(sa, sb, m.normal, rows[i], l);
+    closing = std::max(vn, vn - warm_normal_velocity(warm_a, warm_b, m.normal, rows[i], l)) < -fast_enough;
+  }
   if (!closing) return false;
 
   // 1, 2. The hits, found at the geometry of the sub-step's start; then again at the moment the
@@ -99,7 +120,8 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
     acceleration = ((sa.inv_mass > 0 ? gravity_ : Vec3::Zero()) - (sb.inv_mass > 0 ? gravity_ : Vec3::Zero())).dot(g.normal);
     bool any_hit = false;
     for (int i = 0; i < m.count; ++i) {
-      const Real vn = relative_velocity(sa, sb, g.ra[i], g.rb[i]).dot(g.normal);
+      const Real vn_now = relative_velocity(sa, sb, g.ra[i], g.rb[i]).dot(g.normal);
+      const Real vn = std::max(vn_now, vn_now - warm_normal_velocity(warm_a, warm_b, g.normal, g.ra[i], g.rb[i]));
       const bool bounces = can_bounce && vn < -impact_threshold_;
       const Real restitution = bounces ? m.restitution : 0, threshold = bounces ? impact_threshold_ : landing_speed_;
       hit[i] = (bounces || (unpressed && apart)) &&

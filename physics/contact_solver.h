@@ -59,7 +59,7 @@ class ContactSolver {
 
   // The sweeps' work on the manifold at `place`, or on it and the next side by side (width 2),
   // for the stages of a sub-step (soft_step.h), in the sweeps' order.
-  void warm_start_manifolds(int place, std::vector<BodyState>& states) const;
+  void warm_start_manifolds(int place, SolverBodies& solver_bodies) const;
   // Returns whether one bounced (restitution; only with use_bias).
   bool solve_manifolds(int place, int width, SolverBodies& solver_bodies, Real inv_h, bool use_bias);
   // The bounces alone, for the impact passes after the biased solve (soft_step.h): whether one bounced.

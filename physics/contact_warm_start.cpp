@@ -7,7 +7,8 @@ namespace impulse::physics {
 
 // Last sub-step's impulses, applied again. The points share the normal: one sum of their
 // impulses, added to each body once with friction's.
-void ContactSolver::warm_start_manifolds(int place, std::vector<BodyState>& states) const {
+void ContactSolver::warm_start_manifolds(int place, SolverBodies& solver_bodies) const {
+  std::vector<BodyState>& states = solver_bodies.states;
   const ManifoldLanes& block = lanes_[lane_of_place_[place].block];
   const Real2 j1 = block.tangent_impulse1, j2 = block.tangent_impulse2, twist = block.twist_impulse;
   Real2 normal_sum = splat(0);
@@ -24,8 +25,13 @@ void ContactSolver::warm_start_manifolds(int place, std::vector<BodyState>& stat
     BodyState& sa = states[block.a[l]];
     BodyState& sb = states[block.b[l]];
     const Vec3 linear_l = lane(linear, l);
-    add_velocity(sa, sa.inv_mass * linear_l, lane(turn_a, l));
-    add_velocity(sb, -(sb.inv_mass * linear_l), -lane(turn_b, l));
+    const Vec3 dv_a = sa.inv_mass * linear_l, dw_a = lane(turn_a, l);
+    const Vec3 dv_b = -(sb.inv_mass * linear_l), dw_b = -lane(turn_b, l);
+    add_velocity(sa, dv_a, dw_a);
+    add_velocity(sb, dv_b, dw_b);
+    // The bounce tells a load from an approach by these (contact_bounce.cpp); a still body's stay 0.
+    if (sa.inv_mass != 0) solver_bodies.warm[size_t(block.a[l])].dv += dv_a, solver_bodies.warm[size_t(block.a[l])].dw += dw_a;
+    if (sb.inv_mass != 0) solver_bodies.warm[size_t(block.b[l])].dv += dv_b, solver_bodies.warm[size_t(block.b[l])].dw += dw_b;
   }
 }
 

@@ -77,10 +77,13 @@ void SoftStep::substep(ContactSolver& contacts, JointSolver* joints, SolverBodie
     return false;
   };
   schedule.run(team, [&](int thread) {
-    schedule.slot_share(thread, integrate_velocity);
+    schedule.slot_share(thread, [&](int slot) {
+      integrate_velocity(slot);
+      bodies.warm[size_t(slot)] = WarmStartChange{};
+    });
     meet();
     joint_stage(thread, [&] { joints->warm_start(bodies); });
-    schedule.sweep_share(thread, epoch, [&](int place, int) { contacts.warm_start_manifolds(place, bodies.states); });
+    schedule.sweep_share(thread, epoch, [&](int place, int) { contacts.warm_start_manifolds(place, bodies); });
     meet();
     joint_stage(thread, [&] { joints->solve(bodies, 1 / h, true); });
     bool bounced = false;

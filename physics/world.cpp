@@ -122,8 +122,10 @@ void World::find_contacts(int threads) {
 void World::load_states() {
   solver_bodies_.states.resize(bodies_.size() + 1);
   solver_bodies_.inertia.resize(bodies_.size() + 1);
+  solver_bodies_.warm.resize(bodies_.size() + 1);
   solver_bodies_.states.back() = BodyState{};  // the world, for joints fixed in it: static
   solver_bodies_.inertia.back() = BodyInertia{};
+  solver_bodies_.warm.back() = WarmStartChange{};
   contact_solver_.for_each_slot([&](int slot) {
     Body& body = bodies_[contact_solver_.body_of_slot()[slot]];
     body.refresh_world_inertia();
