@@ -71,6 +71,25 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   bool unpressed = true;
   for (int i = 0; i < block.points; ++i) unpressed = unpressed && rows[i].normal_impulse[l] == 0;
   if (!block.can_bounce && !unpressed) return false;
+  BodyState& sa = solver_bodies.states[block.a[l]];
+  BodyState& sb = solver_bodies.states[block.b[l]];
+  // An approach is the bodies' own, with and without what this sub-step's warm start added (a
+  // load carried on: last sub-step's impulses again, which the soft rows answer): the slower of the
+  // two. Taken for an approach, a load's push would be returned with the restitution (a light box
+  // pinched between two heavy balls, its contacts' impulses thrown back and forth between them,
+  // gained energy sub-step after sub-step); without the push that holds a pair apart, a heap's
+  // resting pairs would bounce on top of it and never settle. Still from the lanes: most pairs end
+  // here, before their constraints are read.
+  const WarmStartChange& warm_a = solver_bodies.warm[size_t(block.a[l])];
+  const WarmStartChange& warm_b = solver_bodies.warm[size_t(block.b[l])];
+  const Vec3 normal = lane(block.normal, l);
+  const Real fast_enough = unpressed ? landing_speed_ : impact_threshold_;
+  bool closing = false;
+  for (int i = 0; i < block.points && !closing; ++i) {
+    const Real vn = normal_velocity(sa, sb, normal, rows[i], l);
+    closing = std::max(vn, vn - warm_normal_velocity(warm_a, warm_b, normal, rows[i], l)) < -fast_enough;
+  }
+  if (!closing) return false;
   ManifoldConstraint& m = manifolds_[place];
   ContactConstraint* points = &constraints_[m.first];
   bool pressed = false;
@@ -83,25 +102,8 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   if (m.bounce_speed > 0 && pressed) return false;
   const bool can_bounce = block.can_bounce && m.restitution > 0;
   if (!can_bounce && !unpressed) return false;
-  BodyState& sa = solver_bodies.states[m.a];
-  BodyState& sb = solver_bodies.states[m.b];
   const BodyInertia& ia = solver_bodies.inertia[m.a];
   const BodyInertia& ib = solver_bodies.inertia[m.b];
-  // An approach is the bodies' own, with and without what this sub-step's warm start added (a
-  // load carried on: last sub-step's impulses again, which the soft rows answer): the slower of the
-  // two. Taken for an approach, a load's push would be returned with the restitution (a light box
-  // pinched between two heavy balls, its contacts' impulses thrown back and forth between them,
-  // gained energy sub-step after sub-step); without the push that holds a pair apart, a heap's
-  // resting pairs would bounce on top of it and never settle.
-  const WarmStartChange& warm_a = solver_bodies.warm[size_t(m.a)];
-  const WarmStartChange& warm_b = solver_bodies.warm[size_t(m.b)];
-  const Real fast_enough = unpressed ? landing_speed_ : impact_threshold_;
-  bool closing = false;
-  for (int i = 0; i < m.count && !closing; ++i) {
-    const Real vn = normal_velocity(sa, sb, m.normal, rows[i], l);
-    closing = std::max(vn, vn - warm_normal_velocity(warm_a, warm_b, m.normal, rows[i], l)) < -fast_enough;
-  }
-  if (!closing) return false;
 
   // 1, 2. The hits, found at the geometry of the sub-step's start; then again at the moment the
   // first of them meets, where the impulses act.
@@ -278,7 +280,7 @@ void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const 
     if (!hit || hit[i]) centre_a += g.ra[i], centre_b += g.rb[i], ++counted;
   const RowGeometry rows_geometry{m.normal, m.tangent1, m.tangent2, m.count, g.ra, g.rb, centre_a / counted, centre_b / counted,
                                   sa.inv_mass, sb.inv_mass, &g.inv_inertia_a, &g.inv_inertia_b};
-  if (normal_rows) set_rows(block, rows, l, rows_geometry);
+  if (normal_rows) set_rows(block, rows, l, rows_geometry, soft_share(softness_));
   else set_friction_rows(block, l, rows_geometry);
 }
 

@@ -96,26 +96,34 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies
     applied_sum = applied_sum + applied;
     turn_a = turn_a + applied * points[k].angular_a;
     turn_b = turn_b + applied * points[k].angular_b;
-    for (int j = 0; j < N; ++j) vn[j] = vn[j] + block.coupling[j][k] * applied;
   };
   // A pair's points at once (pair_points.h); Gauss-Seidel passes where that did not settle.
   Mask2 by_passes = solved;
   if constexpr (N > 1) {
+    const Real2 share = splat(UseBias ? soft_share(softness_) : 0);
     PairRowsIn in[N];
     Real2 solution[N];
     for (int i = 0; i < N; ++i) {
-      in[i] = {select(solved, rows[i].mass, splat(0)), rows[i].push, rows[i].keep};
+      const Real2 compliance = row_compliance(select(rows[i].touching, share, splat(0)), block.coupling[i][i]);
+      in[i] = {rows[i].bias, compliance, solved & (rows[i].mass > 0), rows[i].touching};
       solution[i] = impulse[i];
     }
-    by_passes = solved & ~solve_pair_points<N>(block.coupling, in, vn, solution);
-    for (int k = 0; k < N; ++k) apply(k, solution[k] - impulse[k]);
+    by_passes = solved & ~solve_pair_points<N>(block.coupling, block.touching[UseBias], in, vn, solution);
+    for (int k = 0; k < N; ++k) {
+      const Real2 applied = solution[k] - impulse[k];
+      apply(k, applied);
+      if (any(by_passes))
+        for (int j = 0; j < N; ++j) vn[j] = vn[j] + block.coupling[j][k] * applied;
+    }
   }
   for (int pass = 0; any(by_passes) && pass < (N > 1 ? kMostPasses : 1); ++pass) {
     Real2 vn_before[N];
     for (int k = 0; k < N; ++k) vn_before[k] = vn[k];
     for (int order = 0; order < N; ++order) {
       const int k = (pass % 2 == 1) != Backwards ? N - 1 - order : order;
-      apply(k, select(by_passes, clamped_normal_impulse(rows[k], impulse[k], vn[k]), impulse[k]) - impulse[k]);
+      const Real2 applied = select(by_passes, clamped_normal_impulse(rows[k], impulse[k], vn[k]), impulse[k]) - impulse[k];
+      apply(k, applied);
+      for (int j = 0; j < N; ++j) vn[j] = vn[j] + block.coupling[j][k] * applied;
     }
     Mask2 moving = (vn[0] - vn_before[0] > kTolerance) | (vn_before[0] - vn[0] > kTolerance);
     for (int k = 1; k < N; ++k) moving = moving | (vn[k] - vn_before[k] > kTolerance) | (vn_before[k] - vn[k] > kTolerance);

@@ -68,6 +68,8 @@ inline Real separation_now(const Vec3& normal, const Vec3& anchor_a, const Vec3&
 // bounce's target is restitution's (contact_bounce.cpp).
 struct NormalRow {
   Real2 mass, push, keep;
+  Real2 bias;      // push / mass: the velocity the row drives vn towards -bias
+  Mask2 touching;  // not apart: the row soft (biased solve) or rigid (relax)
 };
 
 // `separation` now; `normal_mass` 1 / eq. 13's denominator. A speculative point (apart) may close
@@ -84,9 +86,9 @@ template <bool UseBias>
     const Real2 soft_bias = splat(softness.bias_rate) * separation;
     const Real2 bias = select(apart, separation * inv_h, select(soft_bias < max_push, max_push, soft_bias));
     const Real2 mass = select(apart, normal_mass, normal_mass * splat(softness.mass_scale));
-    return {mass, mass * bias, select(apart, splat(1), splat(1 - softness.impulse_scale))};
+    return {mass, mass * bias, select(apart, splat(1), splat(1 - softness.impulse_scale)), bias, ~apart};
   } else {
-    return {select(apart, splat(0), normal_mass), splat(0), splat(1)};
+    return {select(apart, splat(0), normal_mass), splat(0), splat(1), splat(0), ~apart};
   }
 }
 

@@ -21,4 +21,8 @@ inline Softness make_softness(Real hertz, Real zeta, Real h) {
   return {omega / a1, a2 * a3, a3};
 }
 
+// A soft row's compliance over its own K_ii: (1 - keep) / mass = impulse_scale / (mass_scale / K_ii)
+// (normal_impulse.h's soft_normal_row); 0 for a rigid one.
+inline Real soft_share(const Softness& s) { return s.impulse_scale / s.mass_scale; }
+
 }  // namespace impulse::physics

@@ -2,7 +2,8 @@
 // no point pulls, none sinks, and a point that pushes stops at its row's fixed point; and the
 // same impulses as Gauss-Seidel passes run until they agree. The problems are a body's corners
 // against the ground: the coupling of N points on a face of a body of random mass, inertia and
-// orientation, the rows soft (the biased solve's) or rigid (the relax solve's).
+// orientation, the rows soft (the biased solve's) or rigid (the relax solve's), the points some
+// apart and some touching, or all touching (the prepared factor's case).
 #include "physics/pair_points.h"
 
 #include "physics/normal_impulse.h"
@@ -19,13 +20,18 @@ namespace {
 
 struct Problem {
   Real2 coupling[4][4] = {};
-  PairRowsIn rows[4];
+  NormalRow rows[4];
+  PairRowsIn in[4];
+  PairFactor factor;
   Real2 vn[4], impulse[4];
 };
 
-// N points of a random box face, random velocities and accumulated impulses, two lanes.
+// N points of a random box face, random velocities and accumulated impulses, two lanes; every
+// point touching, or some apart.
+const Softness softness = make_softness(30, 10, 1.0 / 240);
+
 template <int N>
-Problem random_problem(std::mt19937& rng, bool soft) {
+Problem random_problem(std::mt19937& rng, bool soft, bool touching) {
   std::uniform_real_distribution<Real> u(-1, 1);
   Problem p;
   for (int l = 0; l < 2; ++l) {
@@ -38,29 +44,38 @@ Problem random_problem(std::mt19937& rng, bool soft) {
     const Vec3 corners[4] = {{hx, -0.2, hz}, {-hx, -0.2, hz}, {-hx, -0.2, -hz}, {hx, -0.2, -hz}};
     Vec3 ra[4];
     for (int i = 0; i < N; ++i) ra[i] = r * corners[i];
-    const Softness softness = make_softness(30, 10, 1.0 / 240);
-    for (int i = 0; i < N; ++i) {
+        for (int i = 0; i < N; ++i) {
       for (int j = 0; j < N; ++j) {
         const Vec3 angular_j = world_inv_inertia * ra[j].cross(n);
         p.coupling[i][j][l] = inv_mass + ra[i].cross(n).dot(angular_j);
       }
       const Real normal_mass = 1 / p.coupling[i][i][l];
-      const Real separation = 0.002 * u(rng);
+      const Real separation = touching ? -0.002 * std::abs(u(rng)) : 0.002 * u(rng);
+      const bool apart = separation > kTouching;
       if (soft) {
-        const Real bias = separation > 0 ? separation * 240 : std::max(softness.bias_rate * separation, -3.0);
-        const Real mass = separation > 0 ? normal_mass : normal_mass * softness.mass_scale;
+        const Real bias = apart ? separation * 240 : std::max(softness.bias_rate * separation, -3.0);
+        const Real mass = apart ? normal_mass : normal_mass * softness.mass_scale;
         p.rows[i].mass[l] = mass;
         p.rows[i].push[l] = mass * bias;
-        p.rows[i].keep[l] = separation > 0 ? 1 : 1 - softness.impulse_scale;
+        p.rows[i].keep[l] = apart ? 1 : 1 - softness.impulse_scale;
+        p.rows[i].bias[l] = bias;
       } else {
         p.rows[i].mass[l] = normal_mass;
         p.rows[i].push[l] = 0;
         p.rows[i].keep[l] = 1;
+        p.rows[i].bias[l] = 0;
       }
+      p.rows[i].touching[l] = soft && apart ? 0 : -1;
       p.vn[i][l] = 3 * u(rng);
       p.impulse[i][l] = std::max(u(rng), Real(0));
     }
+    factor_touching_points(p.factor, p.coupling, N, l, soft ? soft_share(softness) : 0);
   }
+  // As the solver passes its rows (contact_solve.cpp).
+  const Real2 share = splat(soft ? soft_share(softness) : 0);
+  for (int i = 0; i < N; ++i)
+    p.in[i] = {p.rows[i].bias, row_compliance(select(p.rows[i].touching, share, splat(0)), p.coupling[i][i]), p.rows[i].mass > 0,
+               p.rows[i].touching};
   return p;
 }
 
@@ -74,15 +89,16 @@ void velocities_after(const Problem& p, const Real2 (&impulse)[N], Real2 (&vn)[N
 }
 
 template <int N>
-void check_many(bool soft) {
-  std::mt19937 rng(N * 2 + soft);
+void check_many(bool soft, bool touching) {
+  std::mt19937 rng(N * 4 + soft * 2 + touching);
   int checked = 0;
   for (int trial = 0; trial < 2000; ++trial) {
-    const Problem p = random_problem<N>(rng, soft);
-    PairRowsIn rows[N];
+    const Problem p = random_problem<N>(rng, soft, touching);
+    PairRowsIn in[N];
+    NormalRow rows[N];
     Real2 vn[N], impulse[N], gauss_seidel[N];
-    for (int i = 0; i < N; ++i) rows[i] = p.rows[i], vn[i] = p.vn[i], impulse[i] = gauss_seidel[i] = p.impulse[i];
-    const Mask2 settled = solve_pair_points<N>(p.coupling, rows, vn, impulse);
+    for (int i = 0; i < N; ++i) in[i] = p.in[i], rows[i] = p.rows[i], vn[i] = p.vn[i], impulse[i] = gauss_seidel[i] = p.impulse[i];
+    const Mask2 settled = solve_pair_points<N>(p.coupling, p.factor, in, vn, impulse);
     Real2 after[N];
     velocities_after<N>(p, impulse, after);
     // Gauss-Seidel until nothing moves, from the same start.
@@ -91,8 +107,7 @@ void check_many(bool soft) {
     for (int pass = 0; pass < 100000; ++pass) {
       Real change = 0;
       for (int k = 0; k < N; ++k) {
-        const NormalRow row{rows[k].mass, rows[k].push, rows[k].keep};
-        const Real2 applied = clamped_normal_impulse(row, gauss_seidel[k], gs_vn[k]) - gauss_seidel[k];
+        const Real2 applied = clamped_normal_impulse(rows[k], gauss_seidel[k], gs_vn[k]) - gauss_seidel[k];
         gauss_seidel[k] = gauss_seidel[k] + applied;
         for (int j = 0; j < N; ++j) gs_vn[j] = gs_vn[j] + p.coupling[j][k] * applied;
         change = std::max({change, std::abs(applied[0]), std::abs(applied[1])});
@@ -119,10 +134,34 @@ void check_many(bool soft) {
   EXPECT_EQ(checked, 2000 * 2 * N);
 }
 
-TEST(PairPoints, TwoSoftPointsStopAtTheirRowsFixedPoints) { check_many<2>(true); }
-TEST(PairPoints, FourSoftPointsStopAtTheirRowsFixedPoints) { check_many<4>(true); }
-TEST(PairPoints, ThreeRigidPointsStopAtTheirRowsFixedPoints) { check_many<3>(false); }
-TEST(PairPoints, FourRigidCornersOfAFaceStopAtTheirRowsFixedPoints) { check_many<4>(false); }
+// The prepared factor is K + C's: L D L^T rebuilt agrees with it, entry by entry.
+TEST(PairPoints, TheTouchingFactorRebuildsItsMatrix) {
+  std::mt19937 rng(7);
+  const Real share = soft_share(softness);
+  for (int trial = 0; trial < 500; ++trial) {
+    const Problem p = random_problem<4>(rng, true, true);
+    for (int l = 0; l < 2; ++l) {
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j <= i; ++j) {
+          Real sum = 0;  // (L D L^T)_ij = sum_k L_ik D_k L_jk, L's diagonal 1
+          for (int k = 0; k <= j; ++k) {
+            const Real lik = k == i ? 1 : p.factor.l[lower(i, k)][l], ljk = k == j ? 1 : p.factor.l[lower(j, k)][l];
+            sum += lik * ljk / p.factor.inv_d[k][l];
+          }
+          const Real expected = p.coupling[i][j][l] + (i == j ? row_compliance(share, p.coupling[i][i][l]) : 0);
+          EXPECT_NEAR(sum, expected, 1e-12 * std::abs(p.coupling[0][0][l])) << "trial " << trial << " (" << i << ", " << j << ")";
+        }
+    }
+  }
+}
+
+TEST(PairPoints, TwoSoftPointsStopAtTheirRowsFixedPoints) { check_many<2>(true, false); }
+TEST(PairPoints, FourSoftPointsStopAtTheirRowsFixedPoints) { check_many<4>(true, false); }
+TEST(PairPoints, ThreeRigidPointsStopAtTheirRowsFixedPoints) { check_many<3>(false, false); }
+TEST(PairPoints, FourRigidCornersOfAFaceStopAtTheirRowsFixedPoints) { check_many<4>(false, false); }
+// Every point touching: the prepared factor's solve where no point pulls, the pivoting where one does.
+TEST(PairPoints, FourSoftTouchingCornersStopAtTheirRowsFixedPoints) { check_many<4>(true, true); }
+TEST(PairPoints, ThreeSoftTouchingPointsStopAtTheirRowsFixedPoints) { check_many<3>(true, true); }
 
 }  // namespace
 }  // namespace impulse::physics
