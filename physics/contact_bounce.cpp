@@ -280,7 +280,7 @@ void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const 
     if (!hit || hit[i]) centre_a += g.ra[i], centre_b += g.rb[i], ++counted;
   const RowGeometry rows_geometry{m.normal, m.tangent1, m.tangent2, m.count, g.ra, g.rb, centre_a / counted, centre_b / counted,
                                   sa.inv_mass, sb.inv_mass, &g.inv_inertia_a, &g.inv_inertia_b};
-  if (normal_rows) set_rows(block, rows, l, rows_geometry, soft_share(softness_));
+  if (normal_rows) set_rows(block, rows, l, rows_geometry);
   else set_friction_rows(block, l, rows_geometry);
 }
 

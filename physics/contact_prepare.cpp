@@ -182,7 +182,7 @@ void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& cont
   fill_lanes(place, m);
 }
 
-void set_rows(ManifoldLanes& block, PointLanes* points, int l, const RowGeometry& g, Real soft_share) {
+void set_rows(ManifoldLanes& block, PointLanes* points, int l, const RowGeometry& g, const Real* soft_share) {
   const Mat3& inv_ia = *g.inv_inertia_a;
   const Mat3& inv_ib = *g.inv_inertia_b;
   const Real linear = g.inv_mass_a + g.inv_mass_b;
@@ -203,8 +203,11 @@ void set_rows(ManifoldLanes& block, PointLanes* points, int l, const RowGeometry
       block.coupling[i][j][l] = block.coupling[j][i][l] =
           inverse_effective_mass_of_rows(linear * g.normal.dot(g.normal), lane(points[i].ra_cross_n, l), lane(points[j].angular_a, l),
                                          lane(points[i].rb_cross_n, l), lane(points[j].angular_b, l));
-  factor_touching_points(block.touching[0], block.coupling, g.count, l, 0);
-  factor_touching_points(block.touching[1], block.coupling, g.count, l, soft_share);
+  block.factored[l] = soft_share ? -1 : 0;
+  if (soft_share) {
+    factor_touching_points(block.touching[0], block.coupling, g.count, l, 0);
+    factor_touching_points(block.touching[1], block.coupling, g.count, l, *soft_share);
+  }
   set_friction_rows(block, l, g);
 }
 
@@ -269,10 +272,11 @@ void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& bl
   }
   centre /= m.count;  // relative to A
   PointLanes* lanes = &lane_points_[block.first_point];
+  const Real share = soft_share(softness_);
   set_rows(block, lanes, l,
            {m.normal, m.tangent1, m.tangent2, m.count, ra, rb, centre, centre + (first.anchor_b - first.anchor_a), sa.inv_mass, sb.inv_mass,
             &solver_bodies.inertia[m.a].inv_inertia, &solver_bodies.inertia[m.b].inv_inertia},
-           soft_share(softness_));
+           &share);
   for (int i = 0; i < m.count; ++i) points[i].normal_mass = lanes[i].normal_mass[l];
   Real twist_radius = 0;
   for (int i = 0; i < m.count; ++i) twist_radius += (points[i].anchor_a - centre).norm() / m.count;

@@ -105,7 +105,7 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies
     Real2 solution[N];
     for (int i = 0; i < N; ++i) {
       const Real2 compliance = row_compliance(select(rows[i].touching, share, splat(0)), block.coupling[i][i]);
-      in[i] = {rows[i].bias, compliance, solved & (rows[i].mass > 0), rows[i].touching};
+      in[i] = {rows[i].bias, compliance, solved & (rows[i].mass > 0), rows[i].touching & block.factored};
       solution[i] = impulse[i];
     }
     by_passes = solved & ~solve_pair_points<N>(block.coupling, block.touching[UseBias], in, vn, solution);

@@ -64,7 +64,7 @@ inline void factor_touching_points(PairFactor& factor, const Real2 (&coupling)[4
 struct PairRowsIn {
   Real2 bias, compliance;  // each point's, as above
   Mask2 takes_part;
-  Mask2 touching;  // its compliance is the one `factor` was prepared with
+  Mask2 touching;  // its compliance is the one `factor` was prepared with, and the factor is the rows'
 };
 
 // The lanes not `settled`, by Murty's principal pivoting (above); `q` as above; `lambda`: the settled
