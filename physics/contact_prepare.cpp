@@ -205,8 +205,7 @@ void set_rows(ManifoldLanes& block, PointLanes* points, int l, const RowGeometry
                                          lane(points[i].rb_cross_n, l), lane(points[j].angular_b, l));
   block.factored[l] = soft_share ? -1 : 0;
   if (soft_share) {
-    factor_touching_points(block.touching[0], block.coupling, g.count, l, 0);
-    factor_touching_points(block.touching[1], block.coupling, g.count, l, *soft_share);
+    factor_touching_points(block.touching[0], block.touching[1], block.coupling, g.count, l, *soft_share);
   }
   set_friction_rows(block, l, g);
 }

@@ -45,18 +45,25 @@ struct PairFactor {
 };
 constexpr int lower(int i, int k) { return i * (i - 1) / 2 + k; }
 
-// Lane `l` of `factor`, for `count` points whose rows all have compliance share `share`.
-inline void factor_touching_points(PairFactor& factor, const Real2 (&coupling)[4][4], int count, int l, Real share) {
-  Real lower_d[4][4] = {}, inv_d[4] = {};  // L D, and 1 / D
+// Lane `l` of the two factors, for `count` points whose rows all have compliance share 0 (`rigid`)
+// or `soft_share` (`soft`): both at once, one in each lane of the arithmetic.
+inline void factor_touching_points(PairFactor& rigid, PairFactor& soft, const Real2 (&coupling)[4][4], int count, int l, Real soft_share) {
+  const Real2 share{0, soft_share};
+  Real2 lower_d[4][4], inv_d[4];  // L D, and 1 / D
   for (int j = 0; j < count; ++j) {
-    Real d = coupling[j][j][l] + row_compliance(share, coupling[j][j][l]);
-    for (int k = 0; k < j; ++k) d -= lower_d[j][k] * lower_d[j][k] * inv_d[k];
-    inv_d[j] = d > 0 ? 1 / d : 0;
-    factor.inv_d[j][l] = inv_d[j];
+    const Real2 k_jj = splat(coupling[j][j][l]);
+    Real2 d = k_jj + row_compliance(share, k_jj);
+    for (int k = 0; k < j; ++k) d = d - lower_d[j][k] * lower_d[j][k] * inv_d[k];
+    inv_d[j] = select(d > 0, splat(1) / d, splat(0));
+    rigid.inv_d[j][l] = inv_d[j][0];
+    soft.inv_d[j][l] = inv_d[j][1];
     for (int i = j + 1; i < count; ++i) {
-      lower_d[i][j] = coupling[i][j][l];
-      for (int k = 0; k < j; ++k) lower_d[i][j] -= lower_d[i][k] * lower_d[j][k] * inv_d[k];
-      factor.l[lower(i, j)][l] = lower_d[i][j] * inv_d[j];
+      Real2 lij = splat(coupling[i][j][l]);
+      for (int k = 0; k < j; ++k) lij = lij - lower_d[i][k] * lower_d[j][k] * inv_d[k];
+      lower_d[i][j] = lij;
+      const Real2 unit = lij * inv_d[j];
+      rigid.l[lower(i, j)][l] = unit[0];
+      soft.l[lower(i, j)][l] = unit[1];
     }
   }
 }

@@ -69,7 +69,10 @@ Problem random_problem(std::mt19937& rng, bool soft, bool touching) {
       p.vn[i][l] = 3 * u(rng);
       p.impulse[i][l] = std::max(u(rng), Real(0));
     }
-    factor_touching_points(p.factor, p.coupling, N, l, soft ? soft_share(softness) : 0);
+    PairFactor rigid, soft_factor;
+    factor_touching_points(rigid, soft_factor, p.coupling, N, l, soft_share(softness));
+    for (int k = 0; k < 6; ++k) p.factor.l[k][l] = (soft ? soft_factor : rigid).l[k][l];
+    for (int k = 0; k < 4; ++k) p.factor.inv_d[k][l] = (soft ? soft_factor : rigid).inv_d[k][l];
   }
   // As the solver passes its rows (contact_solve.cpp).
   const Real2 share = splat(soft ? soft_share(softness) : 0);
@@ -134,23 +137,25 @@ void check_many(bool soft, bool touching) {
   EXPECT_EQ(checked, 2000 * 2 * N);
 }
 
-// The prepared factor is K + C's: L D L^T rebuilt agrees with it, entry by entry.
-TEST(PairPoints, TheTouchingFactorRebuildsItsMatrix) {
+// The prepared factors are K + C's, soft and rigid: L D L^T rebuilt agrees with it, entry by entry.
+TEST(PairPoints, TheTouchingFactorsRebuildTheirMatrices) {
   std::mt19937 rng(7);
-  const Real share = soft_share(softness);
-  for (int trial = 0; trial < 500; ++trial) {
-    const Problem p = random_problem<4>(rng, true, true);
-    for (int l = 0; l < 2; ++l) {
-      for (int i = 0; i < 4; ++i)
-        for (int j = 0; j <= i; ++j) {
-          Real sum = 0;  // (L D L^T)_ij = sum_k L_ik D_k L_jk, L's diagonal 1
-          for (int k = 0; k <= j; ++k) {
-            const Real lik = k == i ? 1 : p.factor.l[lower(i, k)][l], ljk = k == j ? 1 : p.factor.l[lower(j, k)][l];
-            sum += lik * ljk / p.factor.inv_d[k][l];
+  for (const bool soft : {false, true}) {
+    const Real share = soft ? soft_share(softness) : 0;
+    for (int trial = 0; trial < 500; ++trial) {
+      const Problem p = random_problem<4>(rng, soft, true);
+      for (int l = 0; l < 2; ++l) {
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j <= i; ++j) {
+            Real sum = 0;  // (L D L^T)_ij = sum_k L_ik D_k L_jk, L's diagonal 1
+            for (int k = 0; k <= j; ++k) {
+              const Real lik = k == i ? 1 : p.factor.l[lower(i, k)][l], ljk = k == j ? 1 : p.factor.l[lower(j, k)][l];
+              sum += lik * ljk / p.factor.inv_d[k][l];
+            }
+            const Real expected = p.coupling[i][j][l] + (i == j ? row_compliance(share, p.coupling[i][i][l]) : 0);
+            EXPECT_NEAR(sum, expected, 1e-12 * std::abs(p.coupling[0][0][l])) << (soft ? "soft" : "rigid") << " trial " << trial << " (" << i << ", " << j << ")";
           }
-          const Real expected = p.coupling[i][j][l] + (i == j ? row_compliance(share, p.coupling[i][i][l]) : 0);
-          EXPECT_NEAR(sum, expected, 1e-12 * std::abs(p.coupling[0][0][l])) << "trial " << trial << " (" << i << ", " << j << ")";
-        }
+      }
     }
   }
 }
