@@ -67,7 +67,8 @@ struct LegendEntry {
   Colour colour;
   std::string text;
   float scale_pixels = 0.0f;
-  bool dot = false;  // a dot instead of an arrow (contact points)
+  bool dot = false;     // a dot instead of an arrow (contact points)
+  bool asleep = false;  // a swatch of `colour` drawn as a sleeping body is: pale and hatched
 };
 
 // One curve of a plot: (time s, value) points in time order, drawn in `colour`.

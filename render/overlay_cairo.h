@@ -27,6 +27,9 @@ inline const Colour kHighlight = okabe_ito::vermillion;  // as the contact norma
 void set_colour(cairo_t* cr, const Colour& colour, double alpha = 1.0);
 // A flat arrow from (x0, y) to (x0 + length, y), as the 3D arrows are drawn.
 void legend_arrow(cairo_t* cr, double x0, double y, double length, double scale, const Colour& colour);
+// A w x h swatch of `colour` at (x, y) drawn as a sleeping body is (shaders.cpp): paled towards
+// its grey, with darker diagonal stripes 8 pixels (times `scale`) apart.
+void sleeping_swatch(cairo_t* cr, double x, double y, double w, double h, double scale, const Colour& colour);
 
 // The parts of the layer painted this time (pixel rectangles): only they are cleared and
 // composited, so a frame with a small overlay costs little.

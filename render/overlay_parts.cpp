@@ -186,6 +186,8 @@ void OverlayPainter::Cairo::draw_legend(const Overlay& overlay, const PartForm& 
       set_colour(cr, entry.colour);
       cairo_arc(cr, box.x + pad + 6 * scale * k, middle, 4 * scale * k, 0, 2 * M_PI);
       cairo_fill(cr);
+    } else if (entry.asleep) {
+      sleeping_swatch(cr, box.x + pad, middle - 0.4 * line, 28 * scale * k, 0.8 * line, scale * k, entry.colour);
     } else {
       const double length = entry.scale_pixels > 0 ? std::min(double(entry.scale_pixels), icon_width) : 28 * scale * k;
       legend_arrow(cr, box.x + pad, middle, length, scale * k, entry.colour);

@@ -112,6 +112,25 @@ void legend_arrow(cairo_t* cr, double x0, double y, double length, double scale,
   cairo_fill(cr);
 }
 
+void sleeping_swatch(cairo_t* cr, double x, double y, double w, double h, double scale, const Colour& colour) {
+  const double grey = 0.2126 * colour.r + 0.7152 * colour.g + 0.0722 * colour.b;
+  auto pale = [&](double c) { return (c + 0.45 * (grey - c)) * 0.7 + 0.25; };
+  const Colour paled{float(pale(colour.r)), float(pale(colour.g)), float(pale(colour.b))};
+  cairo_save(cr);
+  cairo_rectangle(cr, x, y, w, h);
+  cairo_clip(cr);
+  set_colour(cr, paled);
+  cairo_paint(cr);
+  set_colour(cr, Colour{0.8f * paled.r, 0.8f * paled.g, 0.8f * paled.b});
+  cairo_set_line_width(cr, 2 * scale);
+  for (double u = -h; u < w; u += 8 * scale) {
+    cairo_move_to(cr, x + u, y + h);
+    cairo_line_to(cr, x + u + h, y);
+  }
+  cairo_stroke(cr);
+  cairo_restore(cr);
+}
+
 // Splits a word wider than `max_width` between characters (UTF-8 sequences kept whole) into
 // pieces that fit, each at least one character.
 std::vector<std::string> split_word(cairo_t* cr, const std::string& word, double max_width) {

@@ -88,7 +88,7 @@ void FrameOverlay::make(const FrameState& state, const PlotRecorder& plots, rend
   overlay.clock = options.clock ? format("t = %.2f s", state.time) : "";
   overlay.playback = options.clock ? playback_text(state.speed, state.slow_motion, scene_.playback.speed) : "";
   overlay.playback_highlight = state.slow_motion;
-  overlay.legend = options.legend ? legend(scene_.draw, scales_, view, state.camera.target) : std::vector<render::LegendEntry>{};
+  overlay.legend = options.legend ? legend(scene_.draw, scales_, view, state.camera.target, summary_.someone_sleeps) : std::vector<render::LegendEntry>{};
   if (!options.plots.empty()) {
     const int body = plotted_body(*state.bodies, options.plot_body);
     overlay.plots = plots.plots(state.plotted_steps, scene_.duration, summary_.plot_maxima,

@@ -117,8 +117,8 @@ render::Vec3f cut_to(const render::Vec3f& arrow, double longest) {
   return length > longest ? arrow * float(longest / length) : arrow;
 }
 
-std::vector<render::LegendEntry> legend(const DrawOptions& draw, const ArrowScales& scales,
-                                        const render::CameraView& camera, const render::Vec3f& target) {
+std::vector<render::LegendEntry> legend(const DrawOptions& draw, const ArrowScales& scales, const render::CameraView& camera,
+                                        const render::Vec3f& target, bool someone_sleeps) {
   const double pixels_per_metre = camera.pixels_per_metre(target);
   std::vector<render::LegendEntry> entries;
   if (draw.contact_points) entries.push_back({mark_colour::contact_point, "contact point", 0.0f, true});
@@ -129,6 +129,7 @@ std::vector<render::LegendEntry> legend(const DrawOptions& draw, const ArrowScal
     entries.push_back(scaled_entry("friction impulse", "N\u00b7s", mark_colour::friction_impulse, scales.impulse, pixels_per_metre));
   if (draw.velocities)
     entries.push_back(scaled_entry("velocity", "m/s", mark_colour::velocity, scales.velocity, pixels_per_metre));
+  if (draw.sleeping && someone_sleeps) entries.push_back({mark_colour::asleep_swatch, "asleep (pale, hatched)", 0.0f, false, true});
   return entries;
 }
 

@@ -19,6 +19,7 @@ inline constexpr render::Colour normal_impulse = render::okabe_ito::blue;
 inline constexpr render::Colour friction_impulse = render::okabe_ito::reddish_purple;
 inline constexpr render::Colour velocity{0.20f, 0.20f, 0.20f};          // near black
 inline constexpr render::Colour joint{0.45f, 0.45f, 0.47f};             // grey: rods, ropes, pivots
+inline constexpr render::Colour asleep_swatch = render::okabe_ito::blue;  // the legend's sleeping body
 }  // namespace mark_colour
 
 struct ArrowScales {
@@ -56,8 +57,9 @@ std::vector<physics::ContactRecord> marked_contacts(const std::vector<physics::C
 render::Vec3f cut_to(const render::Vec3f& arrow, double longest);
 
 // The legend for the marks the scene draws. Arrow entries show how long a round value (1 N s,
-// 0.5 m/s, ...) is on screen at the camera's target.
-std::vector<render::LegendEntry> legend(const DrawOptions& draw, const ArrowScales& scales,
-                                        const render::CameraView& camera, const render::Vec3f& target);
+// 0.5 m/s, ...) is on screen at the camera's target. With `someone_sleeps` (a moving body falls
+// asleep in the film) and sleeping bodies drawn as such, a swatch says what pale and hatched means.
+std::vector<render::LegendEntry> legend(const DrawOptions& draw, const ArrowScales& scales, const render::CameraView& camera,
+                                        const render::Vec3f& target, bool someone_sleeps);
 
 }  // namespace impulse::demos

@@ -34,6 +34,7 @@ std::vector<std::unique_ptr<SceneFilm>> SceneFilm::together(const std::vector<co
     largest.largest_impulse = std::max(largest.largest_impulse, summary.largest_impulse);
     largest.impulse_to_fit = std::max(largest.impulse_to_fit, summary.impulse_to_fit);
     largest.largest_speed = std::max(largest.largest_speed, summary.largest_speed);
+    largest.someone_sleeps = largest.someone_sleeps || summary.someone_sleeps;
     largest.plot_maxima.resize(std::max(largest.plot_maxima.size(), summary.plot_maxima.size()), 0.0);
     for (size_t k = 0; k < summary.plot_maxima.size(); ++k)
       largest.plot_maxima[k] = std::max(largest.plot_maxima[k], summary.plot_maxima[k]);
@@ -43,6 +44,7 @@ std::vector<std::unique_ptr<SceneFilm>> SceneFilm::together(const std::vector<co
     summary.largest_impulse = largest.largest_impulse;
     summary.impulse_to_fit = largest.impulse_to_fit;
     summary.largest_speed = largest.largest_speed;
+    summary.someone_sleeps = largest.someone_sleeps;
     summary.plot_maxima.assign(largest.plot_maxima.begin(), largest.plot_maxima.begin() + summary.plot_maxima.size());
     film->develop(width, height, summary);
   }

@@ -11,6 +11,7 @@ struct TakeSummary {
   double impulse_to_fit = 0;         // N s: what the automatic arrow scale fits (marks.h)
   double largest_speed = 0;          // m/s of a moving body
   std::vector<double> plot_maxima;   // one per scene.overlay.plots
+  bool someone_sleeps = false;       // a moving body fell asleep at some step
 };
 
 }  // namespace impulse::demos

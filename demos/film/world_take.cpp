@@ -79,6 +79,7 @@ void WorldTake::step() {
       std::memcpy(&bits, &x, sizeof bits);
       motion_hash_ = (motion_hash_ ^ bits) * 0x100000001b3ull;
     }
+  for (const physics::Body& body : bodies) summary_.someone_sleeps = summary_.someone_sleeps || (!body.is_static() && !body.awake);
   plots_.add_step(record, bodies);
   if (needs_summary(scene_)) summary_.plot_maxima = plots_.maxima();
 

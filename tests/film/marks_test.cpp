@@ -1,6 +1,7 @@
 // Busy frames (marks.h): only the strongest pairs are marked, each pair's points as one mark.
 #include "demos/film/film.h"
 #include "demos/film/marks.h"
+#include "demos/film/world_take.h"
 #include "tests/support/scene_scratch.h"
 
 #include <gtest/gtest.h>
@@ -39,6 +40,36 @@ TEST(MarkedContacts, ABusyFrameKeepsTheStrongestPairsEachAsOneMark) {
   EXPECT_EQ(marked[1].body_a, 3);
   EXPECT_EQ(marked[2].body_a, 4);
   EXPECT_DOUBLE_EQ(marked[2].normal_impulse, 6.0);
+}
+
+// The legend names the sleeping look in a film where a moving body falls asleep, and only there: a
+// ball dropped onto the ground sleeps within its 2 s with [world] sleeping on, and never with it off.
+TEST(Legend, NamesTheSleepingLookWhereABodyFallsAsleep) {
+  const std::filesystem::path dir = testing::scratch("marks_test", "asleep");
+  auto take_of = [&](bool sleeping) {
+    const demos::Scene scene = testing::scene_from(dir, std::string("[scene]\nduration = 2.0\n[world]\nsleeping = ") +
+                                                            (sleeping ? "true" : "false") +
+                                                            "\n[[body]]\nname = \"ground\"\nshape = \"plane\"\n"
+                                                            "[[body]]\nname = \"ball\"\nshape = \"sphere\"\nradius = 0.2\n"
+                                                            "position = [0, 0.5, 0]\nrestitution = 0\n");
+    demos::WorldTake take(scene);
+    while (!take.finished()) take.step();
+    return std::make_pair(scene, take.summary().someone_sleeps);
+  };
+  const auto [asleep_scene, sleeps] = take_of(true);
+  const auto [awake_scene, sleeps_without] = take_of(false);
+  EXPECT_TRUE(sleeps);
+  EXPECT_FALSE(sleeps_without);
+  const render::CameraView camera = render::make_camera_view(render::Camera{}, 1280, 720);
+  auto names_it = [&](const demos::Scene& scene, bool someone_sleeps) {
+    const std::vector<render::LegendEntry> entries = demos::legend(scene.draw, demos::ArrowScales{}, camera, render::Vec3f(0, 1, 0), someone_sleeps);
+    return std::count_if(entries.begin(), entries.end(), [](const render::LegendEntry& e) { return e.asleep && e.text.find("asleep") != std::string::npos; });
+  };
+  EXPECT_EQ(names_it(asleep_scene, sleeps), 1);
+  EXPECT_EQ(names_it(awake_scene, sleeps_without), 0);
+  demos::Scene plain = asleep_scene;
+  plain.draw.sleeping = false;  // sleeping bodies drawn as any other: nothing to name
+  EXPECT_EQ(names_it(plain, true), 0);
 }
 
 }  // namespace

@@ -135,6 +135,35 @@ TEST(Overlay, AWordWiderThanItsBoxIsSplitBetweenCharacters) {
 // Every kind of element at once, in a comparison of two panes over a small frame: each is painted
 // inside the box the painter reports (what --layout-report writes), the boxes are inside the
 // frame and apart, each pane's name inside its pane, and nothing is painted outside the boxes.
+// The legend's sleeping swatch is drawn as a sleeping body is: its colour paled towards grey, with
+// darker diagonal stripes (shaders.cpp's hatch), so both shades fill the swatch.
+TEST(Overlay, TheLegendsSleepingSwatchIsPaleAndHatched) {
+  constexpr int kW = 1280, kH = 720;
+  render::Overlay overlay;
+  const render::Colour blue{0.0f, 0.45f, 0.70f};
+  overlay.legend = {{blue, "asleep (pale, hatched)", 0.0f, false, true}};
+  render::Frame frame{kW, kH, std::vector<uint8_t>(size_t(kW) * kH * 4, 255)};
+  render::OverlayPainter painter(kW, kH);
+  painter.paint(overlay, frame);
+  const render::PaintedLayout& layout = painter.layout();
+  ASSERT_EQ(layout.elements.size(), 1u);
+  const render::ScreenBox& box = layout.elements[0].box;
+  // pale = (c + 0.45 (grey - c)) 0.7 + 0.25 = (0.367, 0.540, 0.636); a stripe 0.8 of it.
+  const int pale[3] = {94, 138, 162}, stripe[3] = {75, 110, 130};
+  auto near = [](const uint8_t* p, const int* c) { return std::abs(p[0] - c[0]) <= 10 && std::abs(p[1] - c[1]) <= 10 && std::abs(p[2] - c[2]) <= 10; };
+  int pale_pixels = 0, stripe_pixels = 0, plain_pixels = 0;
+  for (int y = int(box.y) + 15; y < int(box.y) + 26; ++y)
+    for (int x = int(box.x) + 14; x < int(box.x) + 34; ++x) {
+      const uint8_t* p = &frame.rgba[(size_t(y) * kW + x) * 4];
+      pale_pixels += near(p, pale);
+      stripe_pixels += near(p, stripe);
+      plain_pixels += std::abs(p[0] - 0) <= 10 && std::abs(p[1] - 115) <= 10 && std::abs(p[2] - 179) <= 10;
+    }
+  EXPECT_GT(pale_pixels, 40);
+  EXPECT_GT(stripe_pixels, 20);
+  EXPECT_EQ(plain_pixels, 0) << "the colour itself, not paled";
+}
+
 TEST(Overlay, EveryElementIsPaintedInsideItsReportedBoxAndNoTwoOverlap) {
   constexpr int kW = 640, kH = 360;
   render::Overlay overlay;
