@@ -2,6 +2,7 @@
 // records; the renderer only draws it. render/ knows nothing of physics/.
 #pragma once
 #include <Eigen/Geometry>
+#include <cmath>
 #include <vector>
 
 namespace impulse::render {
@@ -33,7 +34,9 @@ struct BoxItem {
 // overlap (e.g. a velocity and an impulse along one line), the higher `layer` is drawn on top.
 struct ArrowItem { Vec3f origin; Vec3f direction; Colour colour; int layer = 0; };
 // A dot of a fixed size on screen (e.g. a contact point), whatever its distance.
-struct PointItem { Vec3f position; Colour colour; float radius_pixels = 4.0f; };
+// A dot of `radius_pixels` on screen, but no larger than `largest_radius` metres where it is (a
+// fraction of the bodies it marks: a small ball's contact stays a dot on it).
+struct PointItem { Vec3f position; Colour colour; float radius_pixels = 4.0f; float largest_radius = INFINITY; };
 // A straight line of a fixed width on screen (e.g. a rod or rope joint), drawn like an arrow's shaft.
 struct LineItem { Vec3f from; Vec3f to; Colour colour; float width_pixels = 3.0f; };
 

@@ -181,7 +181,7 @@ void Renderer::Gpu::collect(const DrawList& draw_list, const CameraView& camera,
   for (const PointItem& point : draw_list.points) {
     const float pixels_per_metre = camera.pixels_per_metre(point.position);
     if (!(pixels_per_metre > 0.0f) || !(point.radius_pixels > 0.0f)) continue;
-    points.push_back(point_instance(point.position, point.radius_pixels / pixels_per_metre, point.colour));
+    points.push_back(point_instance(point.position, std::min(point.radius_pixels / pixels_per_metre, point.largest_radius), point.colour));
   }
 
   sphere_quads.upload(spheres);

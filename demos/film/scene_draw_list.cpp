@@ -47,6 +47,21 @@ render::Colour faint(const render::Colour& colour) {
   return {colour.r + (1 - colour.r) * kFade, colour.g + (1 - colour.g) * kFade, colour.b + (1 - colour.b) * kFade};
 }
 
+// A contact's dot is at most this share of the smaller body it marks, by body_size().
+constexpr float kDotShare = 0.25f;
+
+// m: a sphere's radius, a box's smallest half-size; a plane (or the world, -1) has none.
+float body_size(const std::vector<physics::Body>& bodies, int body) {
+  if (body < 0 || body >= int(bodies.size())) return INFINITY;
+  const physics::Shape& shape = bodies[body].shape;
+  switch (shape.type) {
+    case physics::ShapeType::sphere: return float(shape.radius);
+    case physics::ShapeType::box: return float(shape.half_extents.minCoeff());
+    case physics::ShapeType::plane: return INFINITY;
+  }
+  return INFINITY;
+}
+
 }  // namespace
 
 std::vector<BodyPose> poses_of(const std::vector<physics::Body>& bodies) {
@@ -110,7 +125,9 @@ render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::
 
   add_joints(list, poses, joints);
   if (draw.contact_points)
-    for (const physics::ContactRecord& contact : contacts) list.points.push_back({to_float(contact.point), mark_colour::contact_point, 4.0f});
+    for (const physics::ContactRecord& contact : contacts)
+      list.points.push_back({to_float(contact.point), mark_colour::contact_point, 4.0f,
+                             kDotShare * std::min(body_size(bodies, contact.body_a), body_size(bodies, contact.body_b))});
   const std::vector<physics::ContactRecord> marked = marked_contacts(contacts, draw.marked_pairs);
   double strongest = 0;
   for (const physics::ContactRecord& contact : marked) strongest = std::max(strongest, contact.normal_impulse);
