@@ -25,8 +25,7 @@ struct alignas(64) ManifoldLanes {
   Real2 friction;
   Real2 turns_a, turns_b;          // 1 where the body's turning moves the points along the normal
   Real2 coupling[4][4];            // d(normal velocity at i) / d(impulse at j), for the points
-  PairFactor touching[2];          // K + C with every point touching: the relax solve's [0], the biased solve's [1]
-  Mask2 factored;                  // `touching` is the rows' (set_rows() at the step's start; not an impact's rows)
+  PairFactors factors[2];          // the factor each solve last used (pair_points.h): the relax solve's [0], the biased solve's [1]
   Real2 tangent_mass1, tangent_mass2, twist_mass;
   Real2 twist_radius;              // mean distance of the points from their centroid
   Real2 rolling_radius;            // rolling resistance times the spheres' radius, else 0
@@ -54,8 +53,8 @@ struct RowGeometry {
 };
 // Each point's normal row (r x n, I^-1 (r x n), 1 / eq. 13's denominator), their coupling, and the
 // friction and twist rows, in lane l of `block` and its `points`. With `soft_share` (the biased
-// solve's rows' compliance share), the coupling's factors for the two solves too (pair_points.h);
-// without, the lane is left unfactored.
+// solve's rows' compliance share), the two solves' factors for every point touching too
+// (pair_points.h); without, the lane is left with none.
 void set_rows(ManifoldLanes& block, PointLanes* points, int l, const RowGeometry& g, const Real* soft_share = nullptr);
 // The friction and twist rows alone.
 void set_friction_rows(ManifoldLanes& block, int l, const RowGeometry& g);

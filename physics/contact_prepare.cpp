@@ -203,10 +203,8 @@ void set_rows(ManifoldLanes& block, PointLanes* points, int l, const RowGeometry
       block.coupling[i][j][l] = block.coupling[j][i][l] =
           inverse_effective_mass_of_rows(linear * g.normal.dot(g.normal), lane(points[i].ra_cross_n, l), lane(points[j].angular_a, l),
                                          lane(points[i].rb_cross_n, l), lane(points[j].angular_b, l));
-  block.factored[l] = soft_share ? -1 : 0;
-  if (soft_share) {
-    factor_touching_points(block.touching[0], block.touching[1], block.coupling, g.count, l, *soft_share);
-  }
+  if (soft_share) factor_touching_points(block.factors[0], block.factors[1], block.coupling, g.count, l, *soft_share);
+  else block.factors[0].pattern[l] = block.factors[1].pattern[l] = 0;
   set_friction_rows(block, l, g);
 }
 

@@ -16,6 +16,28 @@ namespace {
 // changes no point's normal velocity by more than this, or at most this many.
 constexpr Real kTolerance = 1e-5;  // m/s
 constexpr int kMostPasses = 16;
+
+// At most `most` Gauss-Seidel passes over the points of the lanes `by_passes`, forwards then
+// backwards (or the other way round), until one changes no normal velocity by more than
+// kTolerance; apply(k, change) adds to point k's impulse. Out of line: a pair seldom needs it.
+template <int N, class Apply>
+[[gnu::noinline]] void gauss_seidel_passes(const Real2 (&coupling)[4][4], const NormalRow (&rows)[N], Mask2 by_passes, bool backwards, int most,
+                                           Real2 (&vn)[N], const Real2 (&impulse)[N], Apply& apply) {
+  for (int pass = 0; pass < most; ++pass) {
+    Real2 vn_before[N];
+    for (int k = 0; k < N; ++k) vn_before[k] = vn[k];
+    for (int order = 0; order < N; ++order) {
+      const int k = (pass % 2 == 1) != backwards ? N - 1 - order : order;
+      const Real2 applied = select(by_passes, clamped_normal_impulse(rows[k], impulse[k], vn[k]), impulse[k]) - impulse[k];
+      apply(k, applied);
+      for (int j = 0; j < N; ++j) vn[j] = vn[j] + coupling[j][k] * applied;
+    }
+    Mask2 moving = (vn[0] - vn_before[0] > kTolerance) | (vn_before[0] - vn[0] > kTolerance);
+    for (int k = 1; k < N; ++k) moving = moving | (vn[k] - vn_before[k] > kTolerance) | (vn_before[k] - vn[k] > kTolerance);
+    if (!any(moving)) break;
+  }
+}
+
 }  // namespace
 
 bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_bodies, Real inv_h, bool use_bias) {
@@ -29,18 +51,13 @@ bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_b
     else solved[l] = -1;
   }
   if (!any(solved)) return bounced;
-  // The points, the direction and the pass known to the compiler: the rows stay in registers.
+  // The points and the pass known to the compiler: the rows stay in registers.
   using Solve = void (ContactSolver::*)(ManifoldLanes&, Mask2, SolverBodies&, Real);
-  static constexpr Solve kSolves[4][2][2] = {
-      {{&ContactSolver::solve_lanes<1, false, false>, &ContactSolver::solve_lanes<1, false, true>},
-       {&ContactSolver::solve_lanes<1, true, false>, &ContactSolver::solve_lanes<1, true, true>}},
-      {{&ContactSolver::solve_lanes<2, false, false>, &ContactSolver::solve_lanes<2, false, true>},
-       {&ContactSolver::solve_lanes<2, true, false>, &ContactSolver::solve_lanes<2, true, true>}},
-      {{&ContactSolver::solve_lanes<3, false, false>, &ContactSolver::solve_lanes<3, false, true>},
-       {&ContactSolver::solve_lanes<3, true, false>, &ContactSolver::solve_lanes<3, true, true>}},
-      {{&ContactSolver::solve_lanes<4, false, false>, &ContactSolver::solve_lanes<4, false, true>},
-       {&ContactSolver::solve_lanes<4, true, false>, &ContactSolver::solve_lanes<4, true, true>}}};
-  (this->*kSolves[block.points - 1][backwards_][use_bias])(block, solved, solver_bodies, inv_h);
+  static constexpr Solve kSolves[4][2] = {{&ContactSolver::solve_lanes<1, false>, &ContactSolver::solve_lanes<1, true>},
+                                          {&ContactSolver::solve_lanes<2, false>, &ContactSolver::solve_lanes<2, true>},
+                                          {&ContactSolver::solve_lanes<3, false>, &ContactSolver::solve_lanes<3, true>},
+                                          {&ContactSolver::solve_lanes<4, false>, &ContactSolver::solve_lanes<4, true>}};
+  (this->*kSolves[block.points - 1][use_bias])(block, solved, solver_bodies, inv_h);
   return bounced;
 }
 
@@ -55,7 +72,7 @@ bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_b
 // neither pushes nor separates), Gauss-Seidel passes point after point until they agree, forwards
 // and backwards in turn from one sub-step to the next. Then the friction rows (friction.h) at the
 // points' centroid.
-template <int N, bool Backwards, bool UseBias>
+template <int N, bool UseBias>
 void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies& solver_bodies, Real inv_h) {
   std::vector<BodyState>& states = solver_bodies.states;
   BodyState* sa[2] = {&states[block.a[0]], &states[block.a[1]]};
@@ -105,10 +122,10 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies
     Real2 solution[N];
     for (int i = 0; i < N; ++i) {
       const Real2 compliance = row_compliance(select(rows[i].touching, share, splat(0)), block.coupling[i][i]);
-      in[i] = {rows[i].bias, compliance, solved & (rows[i].mass > 0), rows[i].touching & block.factored};
+      in[i] = {rows[i].bias, compliance, solved & (rows[i].mass > 0), rows[i].touching};
       solution[i] = impulse[i];
     }
-    by_passes = solved & ~solve_pair_points<N>(block.coupling, block.touching[UseBias], in, vn, solution);
+    by_passes = solved & ~solve_pair_points<N>(block.coupling, block.factors[UseBias], in, vn, solution);
     for (int k = 0; k < N; ++k) {
       const Real2 applied = solution[k] - impulse[k];
       apply(k, applied);
@@ -116,19 +133,7 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies
         for (int j = 0; j < N; ++j) vn[j] = vn[j] + block.coupling[j][k] * applied;
     }
   }
-  for (int pass = 0; any(by_passes) && pass < (N > 1 ? kMostPasses : 1); ++pass) {
-    Real2 vn_before[N];
-    for (int k = 0; k < N; ++k) vn_before[k] = vn[k];
-    for (int order = 0; order < N; ++order) {
-      const int k = (pass % 2 == 1) != Backwards ? N - 1 - order : order;
-      const Real2 applied = select(by_passes, clamped_normal_impulse(rows[k], impulse[k], vn[k]), impulse[k]) - impulse[k];
-      apply(k, applied);
-      for (int j = 0; j < N; ++j) vn[j] = vn[j] + block.coupling[j][k] * applied;
-    }
-    Mask2 moving = (vn[0] - vn_before[0] > kTolerance) | (vn_before[0] - vn[0] > kTolerance);
-    for (int k = 1; k < N; ++k) moving = moving | (vn[k] - vn_before[k] > kTolerance) | (vn_before[k] - vn[k] > kTolerance);
-    if (!any(moving)) break;
-  }
+  if (any(by_passes)) gauss_seidel_passes<N>(block.coupling, rows, by_passes, backwards_, N > 1 ? kMostPasses : 1, vn, impulse, apply);
   Real2 normal_sum = splat(0);
   for (int i = 0; i < N; ++i) normal_sum = normal_sum + impulse[i];
   const V3 linear = applied_sum * normal;

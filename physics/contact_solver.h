@@ -111,7 +111,7 @@ class ContactSolver {
   ManifoldLanes& begin_lanes(int place, const ManifoldConstraint& m);
   void fill_lanes(int place, const ManifoldConstraint& m);
   void copy_back(int place);
-  template <int N, bool Backwards, bool UseBias>
+  template <int N, bool UseBias>
   void solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies& solver_bodies, Real inv_h);
 
   std::vector<ContactConstraint> constraints_;

@@ -22,7 +22,7 @@ struct Problem {
   Real2 coupling[4][4] = {};
   NormalRow rows[4];
   PairRowsIn in[4];
-  PairFactor factor;
+  PairFactors factors;  // every point touching
   Real2 vn[4], impulse[4];
 };
 
@@ -69,10 +69,12 @@ Problem random_problem(std::mt19937& rng, bool soft, bool touching) {
       p.vn[i][l] = 3 * u(rng);
       p.impulse[i][l] = std::max(u(rng), Real(0));
     }
-    PairFactor rigid, soft_factor;
-    factor_touching_points(rigid, soft_factor, p.coupling, N, l, soft_share(softness));
-    for (int k = 0; k < 6; ++k) p.factor.l[k][l] = (soft ? soft_factor : rigid).l[k][l];
-    for (int k = 0; k < 4; ++k) p.factor.inv_d[k][l] = (soft ? soft_factor : rigid).inv_d[k][l];
+    PairFactors rigid, soft_factors;
+    factor_touching_points(rigid, soft_factors, p.coupling, N, l, soft_share(softness));
+    const PairFactors& mine = soft ? soft_factors : rigid;
+    for (int k = 0; k < 6; ++k) p.factors.factor.l[k][l] = mine.factor.l[k][l];
+    for (int k = 0; k < 4; ++k) p.factors.factor.inv_d[k][l] = mine.factor.inv_d[k][l];
+    p.factors.pattern[l] = mine.pattern[l];
   }
   // As the solver passes its rows (contact_solve.cpp).
   const Real2 share = splat(soft ? soft_share(softness) : 0);
@@ -94,14 +96,26 @@ void velocities_after(const Problem& p, const Real2 (&impulse)[N], Real2 (&vn)[N
 template <int N>
 void check_many(bool soft, bool touching) {
   std::mt19937 rng(N * 4 + soft * 2 + touching);
-  int checked = 0;
+  int checked = 0, kept_new = 0;
   for (int trial = 0; trial < 2000; ++trial) {
     const Problem p = random_problem<N>(rng, soft, touching);
     PairRowsIn in[N];
     NormalRow rows[N];
     Real2 vn[N], impulse[N], gauss_seidel[N];
     for (int i = 0; i < N; ++i) in[i] = p.in[i], rows[i] = p.rows[i], vn[i] = p.vn[i], impulse[i] = gauss_seidel[i] = p.impulse[i];
-    const Mask2 settled = solve_pair_points<N>(p.coupling, p.factor, in, vn, impulse);
+    PairFactors kept = p.factors;
+    const Mask2 settled = solve_pair_points<N>(p.coupling, kept, in, vn, impulse);
+    // Solved again by the factor it kept: the same bits. And without a factor, by the pivoting alone.
+    for (int l = 0; l < 2; ++l) kept_new += kept.pattern[l] != 0 && kept.pattern[l] != p.factors.pattern[l];
+    for (PairFactors again : {kept, PairFactors{}}) {
+      Real2 impulse_again[N];
+      for (int i = 0; i < N; ++i) impulse_again[i] = p.impulse[i];
+      const Mask2 settled_again = solve_pair_points<N>(p.coupling, again, in, vn, impulse_again);
+      for (int l = 0; l < 2; ++l) {
+        ASSERT_EQ(settled_again[l], settled[l]) << "trial " << trial;
+        for (int i = 0; i < N; ++i) ASSERT_EQ(impulse_again[i][l], impulse[i][l]) << "trial " << trial << " point " << i;
+      }
+    }
     Real2 after[N];
     velocities_after<N>(p, impulse, after);
     // Gauss-Seidel until nothing moves, from the same start.
@@ -135,6 +149,7 @@ void check_many(bool soft, bool touching) {
     }
   }
   EXPECT_EQ(checked, 2000 * 2 * N);
+  EXPECT_GT(kept_new, 100) << "the pivoting kept too few factors of its own for the test to mean much";
 }
 
 // The prepared factors are K + C's, soft and rigid: L D L^T rebuilt agrees with it, entry by entry.
@@ -149,8 +164,8 @@ TEST(PairPoints, TheTouchingFactorsRebuildTheirMatrices) {
           for (int j = 0; j <= i; ++j) {
             Real sum = 0;  // (L D L^T)_ij = sum_k L_ik D_k L_jk, L's diagonal 1
             for (int k = 0; k <= j; ++k) {
-              const Real lik = k == i ? 1 : p.factor.l[lower(i, k)][l], ljk = k == j ? 1 : p.factor.l[lower(j, k)][l];
-              sum += lik * ljk / p.factor.inv_d[k][l];
+              const Real lik = k == i ? 1 : p.factors.factor.l[lower(i, k)][l], ljk = k == j ? 1 : p.factors.factor.l[lower(j, k)][l];
+              sum += lik * ljk / p.factors.factor.inv_d[k][l];
             }
             const Real expected = p.coupling[i][j][l] + (i == j ? row_compliance(share, p.coupling[i][i][l]) : 0);
             EXPECT_NEAR(sum, expected, 1e-12 * std::abs(p.coupling[0][0][l])) << (soft ? "soft" : "rigid") << " trial " << trial << " (" << i << ", " << j << ")";
