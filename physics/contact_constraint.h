@@ -67,8 +67,9 @@ struct alignas(64) ManifoldConstraint {
   uint8_t hit_points = 0;              // bit i: point i bounced this step (contact_bounce.cpp)
 };
 
-// A manifold's load at the end of a step, for StackSink: its last sub-step's impulse and the sum of
-// its points' normal masses. Small and apart from the constraints, so that the thread that
+// A manifold's load at the end of a step, for StackSink: its mean impulse a sub-step over the step
+// (the step's total over its sub-steps: steadier than the last sub-step's) and the sum of its
+// points' normal masses. Small and apart from the constraints, so that the thread that
 // reads it does not pull in the lines of the constraints that another thread solves.
 struct ManifoldLoad {
   int a = -1, b = -1;  // slots

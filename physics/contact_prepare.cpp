@@ -113,6 +113,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   // Impulses are per sub-step: when the sub-step changes length, so do they.
   const Real warm_scale = stored_h_ > 0 ? h / stored_h_ : 1;
   h_ = h;
+  substeps_ = 0;
   manifolds_.resize(order.size());
   constraints_.resize(contacts.size());
   constraint_of_contact_.resize(contacts.size());

@@ -65,7 +65,10 @@ class ContactSolver {
   // The bounces alone, for the impact passes after the biased solve (soft_step.h): whether one bounced.
   bool bounce_manifolds(int place, int width, SolverBodies& solver_bodies, Real h);
   void add_to_totals(int place);  // the sub-step's impulses to the step's totals, after the relax pass
-  void end_substep() { backwards_ = !backwards_; }  // the next sub-step goes through the points the other way
+  void end_substep() {
+    backwards_ = !backwards_;  // the next sub-step goes through the points the other way
+    ++substeps_;
+  }
 
   // Keeps the impulses for warm starting the next step, shares each manifold's friction among its
   // points for the records, and notes each manifold's load.
@@ -150,6 +153,7 @@ class ContactSolver {
   std::vector<std::pair<int, int>> previous_range_;
   bool impulses_stored_ = false;  // store_impulses() since the last prepare()
   Real h_ = 0, stored_h_ = 0;      // this step's sub-step, and the stored impulses'
+  int substeps_ = 0;               // this step's, so far
   ContactSolverSettings settings_;
   Real impact_threshold_ = 0;  // m/s: slower hits do not bounce (restitution.h, impact_threshold)
   Real landing_speed_ = 0;     // m/s: a pair apart and pressing nowhere that closes faster lands (contact_bounce.cpp)

@@ -51,7 +51,7 @@ void ContactSolver::store_impulses() {
     ManifoldLoad& load = loads_[place];
     load = {m.a, m.b, 0, 0, constraints_[m.first].normal};
     for (int i = 0; i < m.count; ++i) {
-      load.impulse += constraints_[m.first + i].normal_impulse;
+      load.impulse += constraints_[m.first + i].total_normal_impulse / std::max(substeps_, 1);
       load.normal_mass += constraints_[m.first + i].normal_mass;
     }
     // For the records: each point's share of the friction, by its share of the normal impulse.

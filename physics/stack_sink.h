@@ -15,17 +15,20 @@ namespace impulse::physics {
 
 class StackSink {
  public:
-  // Sum over the deepest chain of (F / m) per contact (a stack's sink times w^2), from the loads
-  // the solver ended last step with (sub-steps of h seconds). `up` is against gravity.
+  // The deepest a body sinks times w^2: (F / m) per contact added along the chains of supports,
+  // a body on several the mean of theirs weighted by their loads, from the loads of the solver's
+  // last step (sub-steps of h seconds). `up` is against gravity.
   Real deepest_give(const ContactSolver& solver, const std::vector<Body>& bodies, const Vec3& up, Real h);
 
  private:
   struct Support {  // between two moving bodies
     int upper, lower;
     Real give;       // load force over the contact's mass
+    Real load;       // its impulse
   };
   std::vector<Support> supports_;
   std::vector<Real> give_below_;  // per body; kept for bodies asleep
+  std::vector<Real> weighted_, weight_;  // per body: its supports' gives times their loads, and the loads
   // Scratch for the topological order, per body: supports under it not yet counted; where its
   // supports of bodies above start in above_ (the supports, grouped by lower body).
   std::vector<int> unsupported_below_, first_above_, next_above_, above_, ready_;
