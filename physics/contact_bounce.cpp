@@ -42,13 +42,13 @@ constexpr Real kPressedShare = 1e-3;
 bool done(Real change, Real largest) { return change <= kImpactTolerance * largest; }
 
 // The normal velocity of a point (eq. 4 and 11 along n) from its rows in lane l.
-Real normal_velocity(const BodyState& sa, const BodyState& sb, const Vec3& normal, const PointLanes& p, int l) {
+[[gnu::always_inline]] inline Real normal_velocity(const BodyState& sa, const BodyState& sb, const Vec3& normal, const PointLanes& p, int l) {
   return (sa.v - sb.v).dot(normal) + sa.w.dot(lane(p.ra_cross_n, l)) - sb.w.dot(lane(p.rb_cross_n, l));
 }
 
 // What this sub-step's warm start added to a point's normal velocity, from its rows in lane l, or
 // at lever arms ra, rb.
-Real warm_normal_velocity(const WarmStartChange& a, const WarmStartChange& b, const Vec3& normal, const PointLanes& p, int l) {
+[[gnu::always_inline]] inline Real warm_normal_velocity(const WarmStartChange& a, const WarmStartChange& b, const Vec3& normal, const PointLanes& p, int l) {
   return (a.dv - b.dv).dot(normal) + a.dw.dot(lane(p.ra_cross_n, l)) - b.dw.dot(lane(p.rb_cross_n, l));
 }
 Real warm_normal_velocity(const WarmStartChange& a, const WarmStartChange& b, const Vec3& normal, const Vec3& ra, const Vec3& rb) {
