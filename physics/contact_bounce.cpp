@@ -68,8 +68,7 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   // A pair pressing nowhere in this sub-step may be landing: slower than the threshold, an impact
   // too, plastic. (So the points of a face that lands flat are answered together.) The lanes'
   // own data first: a pressed pair that cannot bounce, a resting stack's, is done.
-  bool unpressed = true;
-  for (int i = 0; i < block.points; ++i) unpressed = unpressed && rows[i].normal_impulse[l] == 0;
+  const bool unpressed = this->unpressed(block, l);
   if (!block.can_bounce && !unpressed) return false;
   BodyState& sa = solver_bodies.states[block.a[l]];
   BodyState& sb = solver_bodies.states[block.b[l]];

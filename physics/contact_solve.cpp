@@ -47,7 +47,8 @@ bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_b
   Mask2 solved = {0, 0};
   bool bounced = false;
   for (int l = 0; l < width; ++l) {
-    if (use_bias && bounce_lane(place + l, solver_bodies, 1 / inv_h)) bounced = true;
+    // A pressed pair that cannot bounce (a resting stack's) is known from the lanes alone.
+    if (use_bias && (block.can_bounce || unpressed(block, l)) && bounce_lane(place + l, solver_bodies, 1 / inv_h)) bounced = true;
     else solved[l] = -1;
   }
   if (!any(solved)) return bounced;

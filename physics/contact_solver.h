@@ -108,6 +108,12 @@ class ContactSolver {
                            const SolverBodies& solver_bodies);
   static void warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous);
   bool bounce_lane(int place, SolverBodies& solver_bodies, Real h);
+  // Whether lane l of `block` pressed nowhere in this sub-step so far (it may be landing).
+  bool unpressed(const ManifoldLanes& block, int l) const {
+    for (int i = 0; i < block.points; ++i)
+      if (lane_points_[block.first_point + i].normal_impulse[l] != 0) return false;
+    return true;
+  }
   void write_impact_rows(int place, const ImpactGeometry& g, const bool* hit, const Real* separation, const SolverBodies& solver_bodies,
                          bool normal_rows);
   int manifold_of_constraint(int constraint) const;
