@@ -1,6 +1,7 @@
 // Busy frames (marks.h): only the strongest pairs are marked, each pair's points as one mark.
 #include "demos/film/film.h"
 #include "demos/film/marks.h"
+#include "demos/film/scene_draw_list.h"
 #include "demos/film/world_take.h"
 #include "tests/support/scene_scratch.h"
 
@@ -40,6 +41,25 @@ TEST(MarkedContacts, ABusyFrameKeepsTheStrongestPairsEachAsOneMark) {
   EXPECT_EQ(marked[1].body_a, 3);
   EXPECT_EQ(marked[2].body_a, 4);
   EXPECT_DOUBLE_EQ(marked[2].normal_impulse, 6.0);
+}
+
+// A contact's dot keeps to the bodies it marks: at most a quarter of the smaller body's size (a
+// sphere's radius, a box's smallest half-size; a plane has none), over the renderer's 4 pixels.
+TEST(ContactDots, AreAtMostAQuarterOfTheSmallerBody) {
+  std::vector<physics::Body> bodies(3);
+  bodies[0].shape = physics::Shape::plane(physics::Vec3::UnitY(), 0);
+  bodies[1].shape = physics::Shape::box(physics::Vec3(0.5, 0.1, 0.3));
+  bodies[2].shape = physics::Shape::sphere(0.06);
+  const std::vector<physics::ContactRecord> contacts{contact(1, 0, 0.0, 1.0), contact(2, 1, 0.2, 1.0), contact(2, 0, 1.0, 1.0)};
+  const demos::Scene scene;
+  const render::DrawList list =
+      demos::scene_draw_list(scene, bodies, demos::poses_of(bodies), {}, contacts, demos::ArrowScales{}, render::Camera{});
+  ASSERT_EQ(list.points.size(), 3u);
+  const float expected[3] = {0.25f * 0.1f, 0.25f * 0.06f, 0.25f * 0.06f};  // box on ground, ball on box, ball on ground
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_FLOAT_EQ(list.points[size_t(i)].largest_radius, expected[i]) << "contact " << i;
+    EXPECT_FLOAT_EQ(list.points[size_t(i)].radius_pixels, 4.0f) << "contact " << i;
+  }
 }
 
 // The legend names the sleeping look in a film where a moving body falls asleep, and only there: a
