@@ -40,14 +40,22 @@ render::LegendEntry scaled_entry(const std::string& what, const char* unit, rend
 
 }  // namespace
 
+double body_size(const physics::Shape& shape) {
+  switch (shape.type) {
+    case physics::ShapeType::sphere: return shape.radius;
+    case physics::ShapeType::box: return shape.half_extents.minCoeff();
+    case physics::ShapeType::plane: return INFINITY;
+  }
+  return INFINITY;
+}
+
 ArrowScales arrow_scales(const Scene& scene, const TakeSummary& summary) {
   const DrawOptions& draw = scene.draw;
   double smallest = 0.4;  // m, when nothing moves
   bool found = false;
   for (const physics::BodyDef& body : scene.bodies) {
     if (body.is_static || body.shape.type == physics::ShapeType::plane) continue;
-    const double size = body.shape.type == physics::ShapeType::sphere ? body.shape.radius : body.shape.half_extents.minCoeff();
-    smallest = found ? std::min(smallest, size) : size;
+    smallest = found ? std::min(smallest, body_size(body.shape)) : body_size(body.shape);
     found = true;
   }
   const double normal = draw.normal_length > 0 ? draw.normal_length : std::clamp(1.5 * smallest, 0.05, 1.0);

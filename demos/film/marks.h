@@ -29,6 +29,10 @@ struct ArrowScales {
   double normal_length = 0.6;  // m
 };
 
+// A body's size for its marks, m: a sphere's radius, a box's smallest half-size; a plane has none
+// (infinity).
+double body_size(const physics::Shape& shape);
+
 // The scene's scales, or (for 0) a round number (1, 2 or 5 times a power of ten) that draws the
 // largest value of the run (for impulses, summary.impulse_to_fit) about 1.5 m long; normals (for
 // 0) 1.5 times the smallest moving body's radius or half-size. With an automatic impulse scale,

@@ -50,16 +50,9 @@ render::Colour faint(const render::Colour& colour) {
 // A contact's dot is at most this share of the smaller body it marks, by body_size().
 constexpr float kDotShare = 0.25f;
 
-// m: a sphere's radius, a box's smallest half-size; a plane (or the world, -1) has none.
-float body_size(const std::vector<physics::Body>& bodies, int body) {
-  if (body < 0 || body >= int(bodies.size())) return INFINITY;
-  const physics::Shape& shape = bodies[body].shape;
-  switch (shape.type) {
-    case physics::ShapeType::sphere: return float(shape.radius);
-    case physics::ShapeType::box: return float(shape.half_extents.minCoeff());
-    case physics::ShapeType::plane: return INFINITY;
-  }
-  return INFINITY;
+// A contact body's size (body_size()); the world (-1) has none.
+float contact_body_size(const std::vector<physics::Body>& bodies, int body) {
+  return body < 0 || body >= int(bodies.size()) ? INFINITY : float(body_size(bodies[body].shape));
 }
 
 }  // namespace
@@ -127,7 +120,7 @@ render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::
   if (draw.contact_points)
     for (const physics::ContactRecord& contact : contacts)
       list.points.push_back({to_float(contact.point), mark_colour::contact_point, 4.0f,
-                             kDotShare * std::min(body_size(bodies, contact.body_a), body_size(bodies, contact.body_b))});
+                             kDotShare * std::min(contact_body_size(bodies, contact.body_a), contact_body_size(bodies, contact.body_b))});
   const std::vector<physics::ContactRecord> marked = marked_contacts(contacts, draw.marked_pairs);
   double strongest = 0;
   for (const physics::ContactRecord& contact : marked) strongest = std::max(strongest, contact.normal_impulse);
