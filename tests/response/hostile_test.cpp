@@ -55,10 +55,12 @@ void replace_all(std::string& text, const std::string& what, const std::string& 
   for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + with.size())) text.replace(at, what.size(), with);
 }
 
-// Written whole or not at all: two tests may write the same file at once.
-void write_file(const fs::path& path, const std::string& text) {
+// Written whole, with its permissions, or not at all: two tests may write and run the same file at once.
+void write_file(const fs::path& path, const std::string& text,
+                fs::perms permissions = fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read) {
   const fs::path part = path.string() + "." + std::to_string(getpid()) + ".part";
   std::ofstream(part) << text;
+  fs::permissions(part, permissions);
   fs::rename(part, path);
 }
 
@@ -74,8 +76,8 @@ fs::path battery_directory() { return open_folder(fs::path(IMPULSE_TEST_SCRATCH)
 // impulse-respond under an outer limit of 4 GiB of address space: what a sandbox that failed could use.
 fs::path bounded_responder() {
   const fs::path script = battery_directory() / "bounded-impulse-respond";
-  write_file(script, "#!/bin/sh\nulimit -v 4194304\nexec '" + fs::path(IMPULSE_PROGRAM).parent_path().string() + "/impulse-respond' \"$@\"\n");
-  fs::permissions(script, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+  write_file(script, "#!/bin/sh\nulimit -v 4194304\nexec '" + fs::path(IMPULSE_PROGRAM).parent_path().string() + "/impulse-respond' \"$@\"\n",
+             fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
   return script;
 }
 
