@@ -5,6 +5,8 @@
 #include "demos/grade/grade_case.h"
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace impulse::workshop {
@@ -142,7 +144,7 @@ std::vector<std::string> case_names() {
 
 demos::Scene case_scene(const std::string& name) { return find_case(name).scene(); }
 
-CaseResult grade_case(const std::string& name, const physics::OutsideResponseMaker& response) {
+CaseResult grade_case(const std::string& name, const physics::OutsideResponseMaker& response, const std::string& source) {
   const GradeCaseSpec& spec = find_case(name);
   CaseResult result;
   result.name = spec.name;
@@ -155,6 +157,7 @@ CaseResult grade_case(const std::string& name, const physics::OutsideResponseMak
   }
   Run run;
   run.dt = scene.world.time_step;
+  run.source = source;
   try {
     physics::World world = demos::build_world(scene);
     run.states.push_back(world.bodies());
@@ -184,11 +187,18 @@ CaseResult grade_case(const std::string& name, const physics::OutsideResponseMak
   return result;
 }
 
-std::vector<CaseResult> grade(const physics::OutsideResponseMaker& response, const std::string& only) {
-  if (!only.empty()) return {grade_case(only, response)};
+std::vector<CaseResult> grade(const physics::OutsideResponseMaker& response, const std::string& only, const std::string& source) {
+  if (!only.empty()) return {grade_case(only, response, source)};
   std::vector<CaseResult> results;
-  for (const GradeCaseSpec& spec : all_cases()) results.push_back(grade_case(spec.name, response));
+  for (const GradeCaseSpec& spec : all_cases()) results.push_back(grade_case(spec.name, response, source));
   return results;
+}
+
+std::string response_source(const std::string& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
 }
 
 }  // namespace impulse::workshop

@@ -35,10 +35,14 @@ std::vector<std::string> case_names();
 // std::invalid_argument for an unknown name, naming the known ones.
 demos::Scene case_scene(const std::string& name);
 
-// Runs case `name` with `response` (empty: the engine's reference page) and judges it.
-CaseResult grade_case(const std::string& name, const physics::OutsideResponseMaker& response);
+// Runs case `name` with `response` (empty: the engine's reference page) and judges it. `source`:
+// the text of the response's file, so that a hint names its lines where it holds the listing's code.
+CaseResult grade_case(const std::string& name, const physics::OutsideResponseMaker& response, const std::string& source = "");
 
 // Every case, or the one named `only` (exactly), in order.
-std::vector<CaseResult> grade(const physics::OutsideResponseMaker& response, const std::string& only = "");
+std::vector<CaseResult> grade(const physics::OutsideResponseMaker& response, const std::string& only = "", const std::string& source = "");
+
+// The text of a response's file, for grade()'s `source` ("" where it cannot be read).
+std::string response_source(const std::string& path);
 
 }  // namespace impulse::workshop

@@ -17,6 +17,7 @@ struct Run {
   double dt = 0;
   std::vector<std::vector<physics::Body>> states;
   std::vector<std::vector<physics::ContactRecord>> contacts;
+  std::string source;  // the student's file, whose lines a hint may name (empty: the engine's reference)
 
   const physics::Body& body(size_t step, const std::string& name) const;
   // The first step whose contacts include one between the two bodies, or -1; and the first after

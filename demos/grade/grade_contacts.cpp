@@ -8,6 +8,7 @@
 // leaves rolling where mu Jn allows it; a stack that stands, upright, neither box sinking), and
 // report the creep without counting it.
 #include "demos/grade/grade_case.h"
+#include "demos/grade/listing_code.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,10 +25,35 @@ double tilt(const physics::Body& body) { return 2 * std::acos(std::min(1.0, std:
 double speed(const physics::Body& body, double reach) { return body.velocity.norm() + body.angular_velocity.norm() * reach; }
 double horizontal(const Vec3& v) { return std::hypot(v.x(), v.z()); }
 
-const char* kHackHint =
-    "the heavier body sinks deeper: line 85's hack fix, jn += 1.5 * penetration, adds a length to an impulse, so its push "
-    "does not grow with the mass it holds up. Close the depth as a speed through eq. 13's denominator instead (Baumgarte: "
-    "jn += beta / TimeStep() * (penetration - slop) / normDiv), which holds any mass alike";
+const char* kBaumgarte = "jn += beta / TimeStep() * (penetration - slop) / normDiv";
+
+// A push that does not grow with the mass it holds up; the listing's hack fix named where the
+// student's file has it.
+std::string mass_blind_hint(const Run& run, const std::string& what) {
+  const int line = hack_fix_line(run.source);
+  const std::string push = line > 0 ? format("your line %d, the listing's hack fix (its line 85, jn += 1.5 * penetration),", line)
+                                    : std::string("a push of a length times a number added to jn");
+  return what + ": " + push + " adds a length to an impulse, so it does not grow with the mass it holds up. Close the depth as a "
+         "speed through eq. 13's denominator instead (Baumgarte: " + kBaumgarte + "), which holds any mass alike";
+}
+
+// The depth was never pushed back (it only grew): no position correction at all.
+std::string never_corrected_hint(double depth) {
+  return format("the penetration is never corrected: they sank %.1f cm and nothing pushed them back out. Each step's impulse "
+                "stops the approach, but the depth that gravity's g dt opened stays, and grows step after step. Add a position "
+                "correction through eq. 13's denominator (Baumgarte: %s)", 100 * depth, kBaumgarte);
+}
+
+// Whether `depth` (one value a step) grew and never shrank by more than a millimetre: nothing
+// pushed back.
+bool only_grew(const std::vector<double>& depth) {
+  double deepest = 0;
+  for (double d : depth) {
+    if (d < deepest - 0.001) return false;
+    deepest = std::max(deepest, d);
+  }
+  return true;
+}
 
 // Balls of 1 kg and 50 kg set down on the ground (e = 0.5), left to rest for 3 s.
 GradeCaseSpec ball_rest() {
@@ -46,6 +72,11 @@ GradeCaseSpec ball_rest() {
       light_depth = std::max(light_depth, 0.25 - run.body(step, "light").position.y());
       heavy_depth = std::max(heavy_depth, 0.25 - run.body(step, "heavy").position.y());
     }
+    std::vector<double> light_trace, heavy_trace;
+    for (size_t step = 0; step < run.states.size(); ++step) {
+      light_trace.push_back(0.25 - run.body(step, "light").position.y());
+      heavy_trace.push_back(0.25 - run.body(step, "heavy").position.y());
+    }
     Verdict verdict;
     verdict.expected = "under 1 cm/s; each under 2 cm deep, within 2 mm of each other";
     verdict.measured = format("%.1f cm/s; 1 kg %.2f cm deep, 50 kg %.2f cm", 100 * fastest, 100 * light_depth, 100 * heavy_depth);
@@ -53,7 +84,9 @@ GradeCaseSpec ball_rest() {
     const bool alike = std::abs(heavy_depth - light_depth) < 0.002;
     verdict.passed = still && shallow && alike;
     if (!alike && heavy_depth > light_depth)
-      verdict.hint = kHackHint;
+      verdict.hint = mass_blind_hint(run, "the heavier body sinks deeper");
+    else if (!shallow && only_grew(light_trace) && only_grew(heavy_trace))
+      verdict.hint = never_corrected_hint(std::max(light_depth, heavy_depth));
     else if (!still)
       verdict.hint = "a resting ball jiggles: restitution applied to every tiny approach bounces it each step. Bounce only "
                      "hits closing faster than about 0.5 m/s (ERRATA.md: restitution at resting contact)";
@@ -247,26 +280,60 @@ GradeCaseSpec stack() {
     add_box(scene, "top", Vec3(0.5, 0.5, 0.5), 10, Vec3(0, 1.5, 0), Vec3::Zero(), 0, 0.5);
   });
   spec.judge = [](const Run& run) {
+    constexpr double kOff = 0.10, kLeaning = 10 * 3.14159265358979 / 180, kSunk = 0.05;
+    // Each breach's first step (-1: none), so that the hint names the first thing that went wrong.
     double off = 0, leaning = 0, sunk = 0;
+    long off_at = -1, leaning_at = -1, sunk_at = -1;
+    std::vector<double> depth;  // the bottom's in the ground, and the top's in the bottom while it lies flat on it
+    const int top_index = run.index_of("top"), bottom_index = run.index_of("bottom");
+    double friction_before_off = 0, push_before_off = 0;  // N s, between the two boxes, until the top was 10 cm off
     for (size_t step = 0; step < run.states.size(); ++step) {
       const physics::Body& bottom = run.body(step, "bottom");
       const physics::Body& top = run.body(step, "top");
-      off = std::max(off, horizontal(top.position - bottom.position));
+      const double shift = horizontal(top.position - bottom.position);
+      // The top's depth is in what holds it: the bottom while it lies flat on it, the ground once
+      // it lies flat beside it (tilted over the edge, neither).
+      double top_depth = 0;
+      if (tilt(top) < kLeaning / 2) top_depth = shift < 0.45 ? 1.0 - (top.position.y() - bottom.position.y()) : shift > 1.0 ? 0.5 - top.position.y() : 0;
+      const double step_depth = std::max(0.5 - bottom.position.y(), top_depth);
+      depth.push_back(step_depth);
+      off = std::max(off, shift);
       leaning = std::max({leaning, tilt(bottom), tilt(top)});
-      sunk = std::max({sunk, 0.5 - bottom.position.y(), 1.0 - (top.position.y() - bottom.position.y())});
+      sunk = std::max(sunk, step_depth);
+      if (off_at < 0 && shift > kOff) off_at = long(step);
+      if (leaning_at < 0 && std::max(tilt(bottom), tilt(top)) > kLeaning) leaning_at = long(step);
+      if (sunk_at < 0 && step_depth > kSunk) sunk_at = long(step);
+      if (off_at < 0 && step > 0)
+        for (const physics::ContactRecord& contact : run.contacts[step - 1])
+          if ((contact.body_a == top_index && contact.body_b == bottom_index) || (contact.body_a == bottom_index && contact.body_b == top_index))
+          {
+            friction_before_off += contact.tangent_impulse.norm();
+            push_before_off += std::abs(contact.normal_impulse);
+          }
     }
     const double walked = horizontal(run.states.back()[1].position);
     Verdict verdict;
     verdict.expected = "top within 10 cm; upright within 10 deg; sunk under 5 cm";
     verdict.measured = format("top %.1f cm off; leaning %.1f deg; sunk %.1f cm (the stack walked %.0f cm)", 100 * off,
                               leaning * 180 / 3.14159265358979, 100 * sunk, 100 * walked);
-    const bool on = off <= 0.10, upright = leaning <= 10 * 3.14159265358979 / 180, held = sunk <= 0.05;
+    const bool on = off <= kOff, upright = leaning <= kLeaning, held = sunk <= kSunk;
     verdict.passed = on && upright && held;
-    if (!held)
-      verdict.hint = kHackHint;
+    auto first = [](long at, long other) { return at >= 0 && (other < 0 || at <= other); };
+    if (!held && first(sunk_at, off_at) && first(sunk_at, leaning_at))
+      verdict.hint = hack_fix_line(run.source) > 0 ? mass_blind_hint(run, "they sink")
+                     : only_grew(depth)            ? never_corrected_hint(sunk)
+                                                   : "they sink: the position correction is too weak for 10 kg boxes (a larger beta, "
+                                                     "through eq. 13's denominator)";
+    // No friction: none but the rounding of the response's floats, read back from the momenta.
+    else if (!on && first(off_at, leaning_at) && friction_before_off < 1e-4 * push_before_off)
+      verdict.hint = "the top box slid off with no friction holding it: the contacts between the boxes took no tangent impulse "
+                     "before it left. Listing 1 applies the tangent impulse right after the normal impulse (its lines 102-130), "
+                     "against the contact point's sliding, up to mu jn with mu = c0.m_friction";
     else if (!on || !upright)
       verdict.hint = "the top box slid off or toppled: a contact pushes and never pulls (jn >= 0), and friction holds it "
                      "only up to mu jn; e applied to the small approaches of resting boxes throws them about";
+    else if (!held)
+      verdict.hint = "they sink: the position correction is too weak for 10 kg boxes (a larger beta, through eq. 13's denominator)";
     return verdict;
   };
   return spec;

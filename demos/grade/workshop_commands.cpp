@@ -190,7 +190,7 @@ int run_class_child(const GradeArguments& options) {
   StudentResult result;
   result.file = options.file;
   try {
-    result.cases = grade(response_for(options.file, options.time_limit), options.only);
+    result.cases = grade(response_for(options.file, options.time_limit), options.only, response_source(options.file));
     result.compiled = true;
   } catch (const BuildError& error) {
     not_built(result, error);
@@ -236,7 +236,7 @@ int run_grade(const GradeArguments& options, bool progress) {
     write_outputs(options, {student}, true);
     throw;
   }
-  const std::vector<CaseResult> results = grade(response, options.only);
+  const std::vector<CaseResult> results = grade(response, options.only, response_source(options.file));
   std::fputs((options.json ? grade_json(options.file, results) : grade_table(options.file, results)).c_str(), stdout);
   std::fflush(stdout);
   if (!options.video_directory.empty())

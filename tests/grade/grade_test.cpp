@@ -52,13 +52,15 @@ TEST(Grade, CorrectedListingPassesEveryCase) {
 // pushes by 1.5 x penetration (heavy bodies sink) and never clamps friction. Its friction is right
 // where it sticks, but the ball with backspin does not bounce (e = 0), and is told so.
 TEST(Grade, ListingOnePassesOnlyTheHitsAtEZero) {
-  const std::map<std::string, CaseResult> results = by_name(grade(response_of(test::listing("listing1.cpp"))));
+  const std::string listing = test::listing("listing1.cpp");
+  const std::map<std::string, CaseResult> results = by_name(grade(response_of(listing), "", response_source(listing)));
   for (const auto& [name, result] : results)
     EXPECT_EQ(result.passed, name == "head_on_equal_e0" || name == "head_on_unequal_e0") << describe(result);
   EXPECT_NE(results.at("head_on_equal_e0.7").hint.find("line 71"), std::string::npos) << describe(results.at("head_on_equal_e0.7"));
   EXPECT_NE(results.at("head_on_unequal_e1").hint.find("line 71"), std::string::npos);
-  EXPECT_NE(results.at("ball_rest").hint.find("hack fix"), std::string::npos) << describe(results.at("ball_rest"));
-  EXPECT_NE(results.at("stack").hint.find("hack fix"), std::string::npos) << describe(results.at("stack"));
+  // The hack fix named where this file has it: its line 82 (the printed listing's line 85).
+  EXPECT_NE(results.at("ball_rest").hint.find("your line 82, the listing's hack fix"), std::string::npos) << describe(results.at("ball_rest"));
+  EXPECT_NE(results.at("stack").hint.find("your line 82, the listing's hack fix"), std::string::npos) << describe(results.at("stack"));
   EXPECT_NE(results.at("slide_friction").hint.find("clamp"), std::string::npos) << describe(results.at("slide_friction"));
   EXPECT_NE(results.at("slide_frictionless").hint.find("clamp"), std::string::npos);
   EXPECT_NE(results.at("bounce_spin").measured.find("no bounce"), std::string::npos) << describe(results.at("bounce_spin"));
@@ -97,6 +99,30 @@ TEST(Grade, UnclampedFrictionFailsCoulombsCases) {
   }
   for (const char* name : {"head_on_equal_e0.7", "head_on_unequal_e1", "off_centre_spin", "ball_rest", "bounce_spin"})
     EXPECT_TRUE(results.at(name).passed) << describe(results.at(name));
+}
+
+// A hint follows what went wrong in the run, not the case: without friction the top box of the
+// stack slides off (and the hint says friction, not the hack fix the file does not have); without
+// any position correction the resting balls sink and are never pushed back (not a jiggle), and so
+// does the stack.
+TEST(Grade, HintsFollowTheCauseMeasuredInTheRun) {
+  const std::string no_friction = fixture("no_friction.cpp");
+  const std::map<std::string, CaseResult> slid = by_name(grade(response_of(no_friction), "", response_source(no_friction)));
+  const CaseResult& stack = slid.at("stack");
+  EXPECT_FALSE(stack.passed);
+  EXPECT_NE(stack.hint.find("slid off with no friction holding it"), std::string::npos) << describe(stack);
+  EXPECT_EQ(stack.hint.find("hack fix"), std::string::npos) << describe(stack);
+  EXPECT_NE(stack.measured.find("sunk 2."), std::string::npos) << "the top's depth is measured only in what holds it: " << describe(stack);
+
+  const std::string uncorrected = fixture("no_position_correction.cpp");
+  const std::map<std::string, CaseResult> sank = by_name(grade(response_of(uncorrected), "", response_source(uncorrected)));
+  for (const char* name : {"ball_rest", "stack"}) {
+    const CaseResult& result = sank.at(name);
+    EXPECT_FALSE(result.passed) << name;
+    EXPECT_NE(result.hint.find("the penetration is never corrected"), std::string::npos) << describe(result);
+    EXPECT_EQ(result.hint.find("hack fix"), std::string::npos) << describe(result);
+    EXPECT_EQ(result.hint.find("jiggle"), std::string::npos) << describe(result);
+  }
 }
 
 // A crash ends the case with the report (the signal, the step, the bodies), never the grade.

@@ -1,7 +1,9 @@
 """Listing 1 in Python as the world's response, and impulse.grade: the battery of `impulse grade`."""
 
+import importlib.util
 import json
 import os
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -69,3 +71,33 @@ def test_a_scene_runs_with_the_python_response_as_with_the_cpp_one():
     b = cpp.simulate(duration=1.5, progress=False).position("dropped ball")[:, 1]
     assert np.max(np.abs(a - b)) < 1e-3  # floats in C++, doubles here
     assert python.response is listing1_corrected.add_collision_impulse
+
+
+def module_from(tmp_path, name, text):
+    """A module written to a file of its own, as a student's is (the grade reads its lines)."""
+    path = tmp_path / (name + ".py")
+    path.write_text(text)
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_hints_follow_the_cause_and_name_the_students_own_line(tmp_path):
+    listing = Path(listing1_corrected.__file__).read_text()
+    no_friction = module_from(tmp_path, "no_friction", listing[: listing.index("    # TANGENT impulse")])
+    (stack,) = impulse.grade(no_friction.add_collision_impulse, only="stack", progress=False).cases
+    assert not stack["passed"] and "slid off with no friction holding it" in stack["hint"], stack
+    assert "hack fix" not in stack["hint"], stack
+
+    correction = listing[listing.index("    # Position correction") : listing.index("    jn = max(jn, 0.0)")]
+    hack_line = "    jn = jn + (penetration*1.5)"
+    hacked = listing.replace(correction, hack_line + "\n\n")
+    hack = module_from(tmp_path, "hack", hacked)
+    (rest,) = impulse.grade(hack.add_collision_impulse, only="ball_rest", progress=False).cases
+    line = hacked.splitlines().index(hack_line) + 1
+    assert "your line %d, the listing's hack fix" % line in rest["hint"], rest
+
+    uncorrected = module_from(tmp_path, "uncorrected", listing.replace(correction, ""))
+    (rest,) = impulse.grade(uncorrected.add_collision_impulse, only="ball_rest", progress=False).cases
+    assert "the penetration is never corrected" in rest["hint"] and "hack fix" not in rest["hint"], rest
