@@ -3,6 +3,7 @@
 // The engine's reference (listing 1 corrected, physics/listing_reference.h) must pass every case:
 // the cases ask nothing of a student that the method itself cannot do.
 #include "demos/grade/grade.h"
+#include "demos/grade/listing_code.h"
 #include "demos/response/response_build.h"
 #include "demos/response/response_child.h"
 #include "tests/support/response_files.h"
@@ -123,6 +124,17 @@ TEST(Grade, HintsFollowTheCauseMeasuredInTheRun) {
     EXPECT_EQ(result.hint.find("hack fix"), std::string::npos) << describe(result);
     EXPECT_EQ(result.hint.find("jiggle"), std::string::npos) << describe(result);
   }
+}
+
+// The hack fix is found as the student wrote it, in C++ or Python, on its own line; a correction
+// through a division, a comment, or a penetration not added to jn is not it.
+TEST(ListingCode, TheHackFixIsFoundOnTheStudentsLine) {
+  EXPECT_EQ(hack_fix_line("a\nb\njn = jn + (penetration*1.5f);\n"), 3);
+  EXPECT_EQ(hack_fix_line("x\n    jn += 1.5f * penetration;  // stop sinking\n"), 2);
+  EXPECT_EQ(hack_fix_line("def f():\n    jn += penetration * 1.5  # hack\n"), 2);
+  EXPECT_EQ(hack_fix_line("jn = jn + beta / TimeStep() * depth / normDiv;\njn += beta / dt * penetration / normDiv;\n"), 0);
+  EXPECT_EQ(hack_fix_line("// jn = jn + (penetration*1.5f);\n# jn += penetration * 1.5\n"), 0);
+  EXPECT_EQ(hack_fix_line("float depth = penetration * 1.5f;\n"), 0);
 }
 
 // A crash ends the case with the report (the signal, the step, the bodies), never the grade.
