@@ -6,6 +6,7 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -29,6 +30,26 @@ std::string wrapped(const std::string& text, size_t width, const std::string& in
     line += (line.empty() ? "" : " ") + word;
   }
   return out + line;
+}
+
+// A failed case's video, as a student watches it: the impact in slow motion (an impulse above
+// three times what the case's bodies would rest on in a step: the hits and bounces, not a stack's
+// load), at least kShortestVideo long, the last moving body's speed plotted under the panes (the
+// struck, bounced or top one) and the hint's first sentence, what went wrong, under them (two
+// lines: the rest, what to do, is in the table).
+constexpr double kShortestVideo = 2;  // s
+void failure_video_settings(demos::Scene& scene, const std::string& hint) {
+  double resting = 0;  // N s: the weight of every moving body over one step
+  for (const physics::BodyDef& body : scene.bodies)
+    if (!body.is_static) {
+      resting += body.mass * scene.world.gravity.norm() * scene.world.time_step;
+      scene.overlay.plot_body = body.name;
+    }
+  scene.playback.slow_motion_impulse = std::max(3 * resting, 0.05);
+  scene.playback.speed = std::min(1.0, scene.duration / kShortestVideo);
+  scene.overlay.plots = {demos::PlotKind::speed};
+  const size_t sentence = hint.find(". ");
+  if (!hint.empty()) scene.captions = {{"hint: " + hint.substr(0, sentence == std::string::npos ? sentence : sentence + 1), 0, 1e9}};
 }
 
 int passed_count(const std::vector<CaseResult>& results) {
@@ -86,6 +107,7 @@ std::vector<std::string> write_failure_videos(const std::string& directory, cons
     for (demos::Scene* scene : {&student, &reference}) {
       scene->video = *demos::quality_preset("low");
       scene->title = "grade: " + result.title;
+      failure_video_settings(*scene, result.hint);
     }
     demos::RenderOptions options;
     options.video_path = (fs::path(directory) / (result.name + ".mp4")).string();

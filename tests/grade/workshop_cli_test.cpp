@@ -52,8 +52,11 @@ std::string text_of(const fs::path& path) { return test::read(path.string()); }
 // How alike two panes of a frame are: the mean absolute difference of their pixels (0..255),
 // over all but the bottom strip with the pane's label. Panes that show the same thing differ by
 // about 0.5 (the encoder's rounding); a body in another place, by 5 or more.
+// A failure video's panes: two, with a plot and a caption (the hint) under them.
+demos::PaneLayout failure_video_layout(const render::Frame& frame) { return demos::pane_layout(2, frame.width, frame.height, true, true); }
+
 double pane_difference(const render::Frame& frame) {
-  const demos::PaneLayout layout = demos::pane_layout(2, frame.width, frame.height, false, false);
+  const demos::PaneLayout layout = failure_video_layout(frame);
   double total = 0;
   long count = 0;
   for (int y = 0; y < layout.height * 4 / 5; ++y)
@@ -133,6 +136,41 @@ TEST(WorkshopCli, GradeVideoShowsAFailedCaseBesideTheReference) {
   const auto passing = impulse({"grade", test::listing("listing1_corrected.cpp"), "--video", (dir / "none").string()}, dir / "passing.txt");
   EXPECT_EQ(passing.exit_code, 0) << passing.describe();
   EXPECT_TRUE(!fs::exists(dir / "none") || fs::is_empty(dir / "none"));
+}
+
+// A failure video shows the cause: a response without friction fails the bounce with backspin,
+// and its video lasts at least 2 s, slows down at the impact (a chapter marks it), plots the
+// ball's speed under the panes and writes the hint's first sentence under them, in the frames
+// and in the captions track.
+TEST(WorkshopCli, AFailureVideoShowsTheCauseSlowedWithItsPlotAndHint) {
+  const fs::path dir = work_directory();
+  const std::string file = std::string(IMPULSE_SOURCE_DIR) + "/tests/response/responses/no_friction.cpp";
+  const auto result = impulse({"grade", file, "--only", "bounce_spin", "--video", (dir / "videos").string()}, dir / "table.txt");
+  EXPECT_EQ(result.exit_code, 2) << result.describe();
+  const fs::path video_path = dir / "videos" / "bounce_spin.mp4";
+  const ::impulse::testing::DecodedVideo video = ::impulse::testing::decode_video(video_path.string());
+  ASSERT_GT(video.fps, 0);
+  EXPECT_GE(double(video.frames.size()) / video.fps, 2.0);
+  EXPECT_NE(text_of(dir / "videos" / "bounce_spin.chapters.vtt").find("Impact at t = "), std::string::npos);
+  EXPECT_NE(text_of(dir / "videos" / "bounce_spin.vtt").find("hint: the bounce got no friction: vx and the spin are what they were."),
+            std::string::npos);
+  const render::Frame& frame = video.frames[video.frames.size() / 2];
+  const demos::PaneLayout layout = failure_video_layout(frame);
+  ASSERT_GT(layout.plots_row_top, 0);
+  auto share = [&](int x0, int x1, int y0, int y1, auto&& wanted) {
+    long count = 0;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        const uint8_t* p = &frame.rgba[(size_t(y) * frame.width + x) * 4];
+        count += wanted(p[0], p[1], p[2]);
+      }
+    return double(count) / double((x1 - x0) * (y1 - y0));
+  };
+  // The plot's white panel, in the middle under the panes.
+  const int plot_top = int(layout.plots_row_top);
+  EXPECT_GT(share(frame.width * 2 / 5, frame.width * 3 / 5, plot_top + 5, plot_top + 40, [](int r, int g, int b) { return r > 245 && g > 245 && b > 245; }), 0.6);
+  // The caption's dark box, in the band under the plot.
+  EXPECT_GT(share(frame.width / 4, frame.width * 3 / 4, frame.height - 40, frame.height - 20, [](int r, int g, int b) { return r < 90 && g < 90 && b < 90; }), 0.5);
 }
 
 // compare --vary world.response=FILE,reference: the corrected listing beside the engine's
