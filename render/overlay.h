@@ -91,10 +91,13 @@ struct Plot {
   std::vector<PlotSeries> series;
 };
 
-// A caption line; `opacity` in [0, 1] lets it fade in and out at the ends of its time cue.
+// A caption line; `opacity` in [0, 1] lets it fade in and out at the ends of its time cue. A
+// pane's own (`pane`, an index into Overlay::panes) goes inside that pane, at its top; the others
+// under everything, at the bottom.
 struct Caption {
   std::string text;
   float opacity = 1.0f;
+  int pane = -1;
 };
 
 // One pane of a comparison: where it is in the frame, and its name (drawn inside it, bottom left

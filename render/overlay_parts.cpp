@@ -109,27 +109,39 @@ void OverlayPainter::Cairo::draw_clock(const Overlay& overlay, const PartForm& f
 }
 
 // Bottom centre (or centred in the captions' span), the last caption lowest: laid out from the
-// last up, each going above the ones below it.
+// last up, each going above the ones below it. A pane's own caption: top centre inside its pane,
+// the first highest.
 void OverlayPainter::Cairo::add_captions(const Overlay& overlay) {
   const bool span = overlay.captions_right > overlay.captions_left;
   const double left = span ? overlay.captions_left : 0.0, span_width = span ? overlay.captions_right - left : width;
   const double centre = left + span_width / 2;
-  for (int i = int(overlay.captions.size()) - 1; i >= 0; --i) {
+  auto in_pane = [&](const Caption& caption) { return caption.pane >= 0 && caption.pane < int(overlay.panes.size()); };
+  auto add = [&](int i) {
     const Caption& caption = overlay.captions[i];
-    if (!(caption.opacity > 0)) continue;
+    if (!(caption.opacity > 0)) return;
+    const ScreenBox* pane = in_pane(caption) ? &overlay.panes[caption.pane].box : nullptr;
     auto [part, request] = add_part(PartKind::caption, i);
     for (const Shrink& shrink : kTextForms) {
       const double size = kCaptionSize * scale * shrink.k, pad_x = kCaptionPadX * scale * shrink.k;
       const double pad_y = kCaptionPadY * scale * shrink.k;
-      const double wrap_width = (span ? span_width - 2 * pad_x : 0.8 * width) * shrink.wrap_share;
+      const double wrap_width = (pane ? 0.9 * pane->w - 2 * pad_x : span ? span_width - 2 * pad_x : 0.8 * width) * shrink.wrap_share;
       const WrappedText& text = wrapped(caption.text, size, false, wrap_width);
       part.forms.push_back({shrink.k, &text});
       request.sizes.emplace_back(text.width + 2 * pad_x, size * 1.35 * text.lines.size() + 2 * pad_y);
     }
-    request.spots = {{Vec2f(centre, height - kCaptionMargin * scale), Vec2f(0.5f, 1)}};
+    if (pane) {
+      request.spots = {{Vec2f(pane->x + pane->w / 2, pane->y + kCaptionMargin * scale), Vec2f(0.5f, 0)}};
+      request.bounds = *pane;
+    } else {
+      request.spots = {{Vec2f(centre, height - kCaptionMargin * scale), Vec2f(0.5f, 1)}};
+      if (span) request.bounds = {float(left), 0, float(span_width), float(height)};
+    }
     request.slide = {3, 1};
-    if (span) request.bounds = {float(left), 0, float(span_width), float(height)};
-  }
+  };
+  for (int i = 0; i < int(overlay.captions.size()); ++i)
+    if (in_pane(overlay.captions[i])) add(i);
+  for (int i = int(overlay.captions.size()) - 1; i >= 0; --i)
+    if (!in_pane(overlay.captions[i])) add(i);
 }
 
 void OverlayPainter::Cairo::draw_caption(const Caption& caption, const PartForm& form, const ScreenBox& box) {

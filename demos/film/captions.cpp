@@ -13,7 +13,7 @@ float cue_opacity(double start, double end, double time) {
 std::vector<render::Caption> captions_at(const std::vector<CaptionCue>& cues, double time) {
   std::vector<render::Caption> shown;
   for (const CaptionCue& cue : cues)
-    if (time >= cue.start && time < cue.end) shown.push_back({cue.text, cue_opacity(cue.start, cue.end, time)});
+    if (time >= cue.start && time < cue.end) shown.push_back({cue.text, cue_opacity(cue.start, cue.end, time), cue.own ? 0 : -1});
   return shown;
 }
 

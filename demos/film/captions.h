@@ -8,6 +8,7 @@
 
 namespace impulse::demos {
 
+// A pane's own cue (CaptionCue::own) is given pane 0: the film puts each pane's in its place.
 std::vector<render::Caption> captions_at(const std::vector<CaptionCue>& cues, double time);
 
 // How opaque a cue shown from `start` to `end` is at `time` within it: fading in and out over

@@ -103,9 +103,9 @@ void Film::next(FilmPicture& picture) {
   }
 }
 
-// The first pane's overlay for the whole frame; every pane's labels, panels and bodies moved to
-// where the pane is and kept inside it, its name in it, and each plot's curves of every pane on
-// the first pane's axes.
+// The first pane's overlay for the whole frame (its captions under the panes); every pane's
+// labels, panels, bodies and own captions moved to where the pane is and kept inside it, its name
+// in it, and each plot's curves of every pane on the first pane's axes.
 void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay) const {
   std::vector<render::OverlayLabel> labels;
   std::vector<render::Plot> plots;
@@ -113,9 +113,17 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
   std::vector<render::OverlayPane> panes;
   std::vector<render::OverlayBody> bodies;
   std::vector<render::ScreenBox> paths;
+  std::vector<render::Caption> captions;  // the first pane's for the frame, then every pane's own
+  for (const render::Caption& caption : pictures.front().overlay.captions)
+    if (caption.pane < 0) captions.push_back(caption);
   for (size_t i = 0; i < pictures.size(); ++i) {
     render::Overlay& pane = pictures[i].overlay;
     const render::Vec2f origin = layout_.origins[i].cast<float>();
+    for (render::Caption caption : pane.captions)
+      if (caption.pane >= 0) {
+        caption.pane = int(i);
+        captions.push_back(std::move(caption));
+      }
     for (render::OverlayLabel label : pane.labels) {
       label.anchor += origin;
       for (render::ScreenSegment& segment : label.avoid) {
@@ -154,6 +162,7 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
     }
   }
   overlay = std::move(pictures.front().overlay);
+  overlay.captions = std::move(captions);
   overlay.labels = std::move(labels);
   overlay.panels = std::move(panels);
   overlay.plots = std::move(plots);

@@ -4,6 +4,7 @@
 
 #include "physics/materials.h"
 
+#include <charconv>
 #include <cstdio>
 #include <sstream>
 
@@ -54,6 +55,29 @@ CompareSpec compare_from_vary(const std::string& vary) {
   return compare;
 }
 
+namespace {
+
+// A value as the file wrote it, for --set and for the panes' labels: a float in its shortest
+// form that reads back the same (0.2, not 0.20000000000000001; 1.0, not 1), a list item by item.
+std::string value_text(const toml::node& value) {
+  if (const toml::array* list = value.as_array()) {
+    std::string text = "[";
+    for (size_t i = 0; i < list->size(); ++i) text += (i ? ", " : "") + value_text(*list->get(i));
+    return text + "]";
+  }
+  if (const auto* number = value.as_floating_point()) {
+    char digits[32];
+    const auto end = std::to_chars(digits, digits + sizeof digits, number->get()).ptr;
+    const std::string text(digits, end);
+    return text.find_first_not_of("-0123456789") == std::string::npos ? text + ".0" : text;  // 1.0 stays a float
+  }
+  std::ostringstream text;
+  value.visit([&](const auto& node) { text << node; });
+  return text.str();
+}
+
+}  // namespace
+
 void read_compare(TableReader& top, Scene& scene) {
   const toml::table* t = top.table("compare");
   if (!t) return;
@@ -68,10 +92,8 @@ void read_compare(TableReader& top, Scene& scene) {
   if (!list || list->size() < 2 || list->size() > 4)
     r.fail(values, "values", "must be a list of two to four values of the field, one per pane");
   for (const toml::node& value : *list) {
-    std::ostringstream text;
-    value.visit([&](const auto& node) { text << node; });
-    compare.values.push_back(text.str());
-    compare.labels.push_back(compare.key + " = " + text.str());
+    compare.values.push_back(value_text(value));
+    compare.labels.push_back(compare.key + " = " + compare.values.back());
   }
   if (const toml::node* labels = r.get("labels")) {
     const toml::array* names = labels->as_array();
@@ -184,6 +206,13 @@ std::vector<Scene> load_variants(const SceneFile& file, const std::vector<std::s
     Scene& scene = scenes.back();
     scene.compare = CompareSpec{};
     std::erase_if(scene.checks, [&](const CheckSpec& check) { return check.pane != 0 && check.pane != int(i) + 1; });
+    std::erase_if(scene.captions, [&](const CaptionCue& cue) { return cue.pane != 0 && cue.pane != int(i) + 1; });
+    for (CaptionCue& cue : scene.captions) {
+      cue.own = cue.pane != 0 || names_the_pane(cue.text);
+      for (const auto& [name, value] : {std::pair{"{value}", compare.values[i]}, std::pair{"{label}", compare.labels[i]}})
+        for (size_t at = cue.text.find(name); at != std::string::npos; at = cue.text.find(name, at + value.size()))
+          cue.text.replace(at, std::string(name).size(), value);
+    }
   }
   if (varies_material(compare.key)) {
     bool all_same = true;

@@ -81,6 +81,7 @@ Scene SceneFile::scene(const std::vector<std::string>& settings) const {
   read_view(top, scene);  // after the bodies, whose names it checks
   read_equations(top, scene);  // after [playback]
   read_compare(top, scene);
+  read_captions(top, scene);
   read_checks(top, scene);
   top.finish();
   if (scene.bodies.empty())

@@ -1,4 +1,4 @@
-// [camera] (with follow and [[camera.keyframe]]), [video], [draw], [overlay], [[caption]] and
+// [camera] (with follow and [[camera.keyframe]]), [video], [draw], [overlay], [[caption]] (read after [compare], as a caption may name a pane) and
 // [playback]: what the video shows and how it is encoded.
 #include "demos/scene/scene_sections.h"
 #include "demos/scene/video_quality.h"
@@ -130,6 +130,10 @@ void read_overlay(TableReader& top, Scene& scene) {
   r.finish();
 }
 
+}  // namespace
+
+bool names_the_pane(const std::string& text) { return text.find("{value}") != std::string::npos || text.find("{label}") != std::string::npos; }
+
 void read_captions(TableReader& top, Scene& scene) {
   const toml::array* captions = top.table_list("caption");
   if (!captions) return;
@@ -141,10 +145,19 @@ void read_captions(TableReader& top, Scene& scene) {
     cue.start = r.number("start", 0, 0);
     cue.end = r.number("end", scene.duration, 0);
     if (cue.end <= cue.start) r.fail(r.get("end"), "end", "must come after start");
+    const int panes = int(scene.compare.values.size());
+    cue.pane = r.integer("pane", 0, 0, 4);
+    if (cue.pane > panes)
+      r.fail(r.get("pane"), "pane", panes == 0 ? "the scene has no [compare] table, so no panes"
+                                              : "the [compare] table has " + std::to_string(panes) + " panes");
+    if (panes == 0 && names_the_pane(cue.text))
+      r.fail(r.get("text"), "text", "names a pane's {value} or {label}, but the scene has no [compare] table, so no panes");
     r.finish();
     scene.captions.push_back(cue);
   }
 }
+
+namespace {
 
 void read_playback(TableReader& top, Scene& scene) {
   const toml::table* t = top.table("playback");
@@ -166,7 +179,6 @@ void read_view(TableReader& top, Scene& scene) {
   read_video(top, scene);
   read_draw(top, scene);
   read_overlay(top, scene);
-  read_captions(top, scene);
   read_playback(top, scene);
 }
 

@@ -29,12 +29,19 @@ struct VideoSetting {
   std::string preset = "ultrafast";  // x264's speed preset: half superfast's encoding time, files 1.3-1.9x as large
 };
 
-// [[caption]]: a line shown from `start` to `end` seconds of simulated time.
+// [[caption]]: a line shown from `start` to `end` seconds of simulated time. In a comparison
+// ([compare]) it may belong to one pane (`pane = N`, from 1) or name each pane's value or label
+// (`{value}`, `{label}` in its text): then each pane shows its own, inside the pane.
 struct CaptionCue {
   std::string text;
   double start = 0;
   double end = 1e9;
+  int pane = 0;      // the pane it belongs to, from 1; 0: every pane
+  bool own = false;  // a pane's own (scene_compare.h made it so): drawn inside the pane, not under them
 };
+
+// Whether a caption's text names the pane's value or label.
+bool names_the_pane(const std::string& text);
 
 enum class PlotKind { kinetic_energy, momentum, speed };
 

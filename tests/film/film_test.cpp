@@ -73,6 +73,28 @@ TEST(Film, PanesShareTheirMomentsAndSlowDownAroundAnyPanesImpact) {
   }
 }
 
+// Each pane's own captions (CaptionCue::own, as scene_compare.h marks them) are given its index;
+// the frame's are the first pane's, once.
+TEST(Film, EachPanesOwnCaptionIsNamedForItsPaneAndTheFramesComeOnce) {
+  const auto dir = testing::scratch("film_compare_test", "captions");
+  demos::Scene low = testing::scene_from(dir, drop(0.5));
+  demos::Scene high = testing::scene_from(dir, drop(1.5));
+  for (demos::Scene* scene : {&low, &high}) scene->captions = {{"for the frame", 0, 10}};
+  low.captions.push_back({"low's own", 0, 10, 1, true});
+  high.captions.push_back({"high's own", 0, 10, 2, true});
+  demos::Film together({{&low, "low"}, {&high, "high"}}, 640, 360);
+  demos::FilmPicture picture;
+  together.next(picture);
+  together.next(picture);
+  ASSERT_EQ(picture.overlay.captions.size(), 3u);
+  EXPECT_EQ(picture.overlay.captions[0].text, "for the frame");
+  EXPECT_EQ(picture.overlay.captions[0].pane, -1);
+  EXPECT_EQ(picture.overlay.captions[1].text, "low's own");
+  EXPECT_EQ(picture.overlay.captions[1].pane, 0);
+  EXPECT_EQ(picture.overlay.captions[2].text, "high's own");
+  EXPECT_EQ(picture.overlay.captions[2].pane, 1);
+}
+
 // [overlay] equation = "eq8": from the impact on, a panel fills eq. 8 in with the hit's numbers,
 // the solver's impulse beside it, and the printed -(1 - e)'s, typeset (its TeX read here). 1 kg at 3 m/s onto 2 kg at rest,
 // e = 0.7: J = 1.7 * 3 / 1.5 = 3.40 N s; printed 0.3 * 3 / 1.5 = 0.60 N s.

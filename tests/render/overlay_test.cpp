@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <map>
 #include <set>
 #include <string>
 
@@ -229,6 +230,24 @@ TEST(Overlay, EveryElementIsPaintedInsideItsReportedBoxAndNoTwoOverlap) {
   }
   EXPECT_GT(painted, 10000);
   EXPECT_EQ(outside, 0) << "pixels painted outside every reported box";
+}
+
+// A pane's own caption goes inside its pane, at its top; the frame's caption under the panes.
+TEST(Overlay, APanesOwnCaptionIsInsideItsPaneAndTheFramesUnderThePanes) {
+  render::Frame frame{kWidth, kHeight, std::vector<uint8_t>(size_t(kWidth) * kHeight * 4, 255)};
+  render::Overlay overlay;
+  const float pane_w = kWidth / 2.0f - 12, pane_h = kHeight * 0.6f;
+  overlay.panes = {{{4, 40, pane_w, pane_h}, "one", {0.0f, 0.45f, 0.7f}}, {{kWidth / 2.0f + 8, 40, pane_w, pane_h}, "two", {0.8f, 0.4f, 0.0f}}};
+  overlay.captions = {{"under both", 1.0f, -1}, {"e = 0.9", 1.0f, 1}};
+  render::OverlayPainter painter(kWidth, kHeight);
+  painter.paint(overlay, frame);
+  std::map<std::string, render::ScreenBox> placed;
+  for (const render::PaintedElement& element : painter.layout().elements) placed[element.name] = element.box;
+  ASSERT_TRUE(placed.count("caption 1") && placed.count("caption 2")) << painter.layout().elements.size();
+  const render::ScreenBox own = placed["caption 2"], pane = overlay.panes[1].box;
+  EXPECT_TRUE(render::contains(pane, own)) << own.x << " " << own.y << " " << own.w << " " << own.h;
+  EXPECT_LT(own.y, pane.y + pane.h / 3) << "at the pane's top";
+  EXPECT_GE(placed["caption 1"].y, pane.y + pane.h) << "the frame's caption is under the panes";
 }
 
 }  // namespace

@@ -87,5 +87,31 @@ TEST(CompareMaterials, ValuesThatShowNeedNoWarning) {
   EXPECT_TRUE(switched.warnings.empty());
 }
 
+// A caption may belong to one pane (pane = N) or name each pane's value and label ({value},
+// {label}): each pane keeps its own, marked to be drawn inside it, and the frame's (the others)
+// stay as they are; a number reads as the file wrote it (0.2, not 0.20000000000000001).
+TEST(CompareCaptions, EachPaneKeepsItsOwnWithItsValueAndLabel) {
+  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / "compare_captions_test.toml";
+  std::ofstream(path) << bob_scene("[0.2, 0.9]", "0.1", "0.1") +
+                             "[[caption]]\ntext = \"e = {value} ({label})\"\n"
+                             "[[caption]]\ntext = \"only the second\"\npane = 2\n"
+                             "[[caption]]\ntext = \"every pane\"\n";
+  const SceneFile file(path.string());
+  const Scene scene = file.scene();
+  ASSERT_EQ(scene.compare.values, (std::vector<std::string>{"0.2", "0.9"}));
+  const std::vector<Scene> panes = load_variants(file, {}, scene.compare);
+  ASSERT_EQ(panes.size(), 2u);
+  ASSERT_EQ(panes[0].captions.size(), 2u);
+  EXPECT_EQ(panes[0].captions[0].text, "e = 0.2 (body[bob].restitution = 0.2)");
+  EXPECT_TRUE(panes[0].captions[0].own);
+  EXPECT_EQ(panes[0].captions[1].text, "every pane");
+  EXPECT_FALSE(panes[0].captions[1].own);
+  ASSERT_EQ(panes[1].captions.size(), 3u);
+  EXPECT_EQ(panes[1].captions[0].text, "e = 0.9 (body[bob].restitution = 0.9)");
+  EXPECT_EQ(panes[1].captions[1].text, "only the second");
+  EXPECT_TRUE(panes[1].captions[1].own);
+  EXPECT_FALSE(panes[1].captions[2].own);
+}
+
 }  // namespace
 }  // namespace impulse::demos
