@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <string>
 
 namespace impulse::demos {
@@ -64,9 +65,12 @@ ArrowScales arrow_scales(const Scene& scene, const TakeSummary& summary) {
           auto_scale(draw.velocity_scale, summary.largest_speed), normal};
 }
 
-double impulse_to_fit(const std::vector<ImpulsePeak>& peaks) {
+double impulse_to_fit(const std::vector<ImpulsePeak>& all) {
   constexpr double kMoment = 0.25;  // s around the largest
   constexpr double kOutweighs = 4;
+  std::vector<ImpulsePeak> peaks;
+  std::copy_if(all.begin(), all.end(), std::back_inserter(peaks), [](const ImpulsePeak& peak) { return peak.impact; });
+  if (peaks.empty()) peaks = all;
   if (peaks.empty()) return 0;
   const ImpulsePeak largest = *std::max_element(peaks.begin(), peaks.end(), [](const ImpulsePeak& a, const ImpulsePeak& b) {
     return a.impulse < b.impulse;

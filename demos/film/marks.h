@@ -42,12 +42,16 @@ ArrowScales arrow_scales(const Scene& scene, const TakeSummary& summary);
 struct ImpulsePeak {
   double time = 0;     // s
   double impulse = 0;  // N s: the step's largest, normal or friction, on a moving body
+  bool impact = true;  // more than a load can be (kLoadShare of every moving body's weight over a step)
 };
+constexpr double kLoadShare = 1.5;
 
-// The impulse the automatic scale fits: the run's largest, unless the impulses within 0.25 s of
-// it outweigh every other moment's more than 4 times. Then the largest of the other moments, so
-// that one hard landing does not shrink every other arrow of the run to nothing; the landing's
-// arrow is cut (ArrowScales::longest_impulse) and its value written beside it.
+// The impulse the automatic scale fits, from the impacts (the loads of resting contacts only when
+// nothing hits: a scene is drawn to show its hits, and a load fitted before a hit draws the waiting
+// bodies' arrows long and the hit's far too long): the largest impact, unless the impacts within
+// 0.25 s of it outweigh every other moment's impacts more than 4 times. Then the largest of those,
+// so that one hard hit does not shrink the other hits' arrows to nothing; its arrow is cut
+// (ArrowScales::longest_impulse) and its value written beside it.
 double impulse_to_fit(const std::vector<ImpulsePeak>& peaks);
 
 // The contacts whose normals and impulse arrows a frame draws (and whose impulse its label may

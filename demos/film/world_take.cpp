@@ -36,6 +36,7 @@ WorldTake::WorldTake(const Scene& scene)
   for (const physics::Body& body : bodies_) {
     velocities_.push_back(body.velocity);
     awake_.push_back(body.awake);
+    if (!body.is_static()) weight_impulse_ += body.mass * scene.world.gravity.norm() * scene.world.time_step;
   }
   checks_.start(world_);
 }
@@ -64,7 +65,7 @@ void WorldTake::step() {
       if (threshold > 0 && contact.normal_impulse >= threshold) impact = true;
     }
     summary_.largest_impulse = std::max(summary_.largest_impulse, step_largest);
-    if (step_largest > 0) impulse_peaks_.push_back({record.time, step_largest});
+    if (step_largest > 0) impulse_peaks_.push_back({record.time, step_largest, step_largest > kLoadShare * weight_impulse_});
     if (finished()) summary_.impulse_to_fit = impulse_to_fit(impulse_peaks_);
     if (impact) summary_.impact_times.push_back(record.time);
     for (const physics::Body& body : bodies)

@@ -72,6 +72,7 @@ class WorldTake {
   CheckWatch checks_;
   PlotRecorder plots_;
   std::vector<ImpulsePeak> impulse_peaks_;  // each step's largest impulse, for the arrow scale
+  double weight_impulse_ = 0;                // N s: every moving body's weight over a step, the most a load presses
   std::deque<Step> pending_;  // stepped, not yet taken by a frame
   ContactHold hold_;
   int64_t steps_taken_ = 0;
