@@ -126,8 +126,11 @@ render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::
   for (const physics::ContactRecord& contact : marked) strongest = std::max(strongest, contact.normal_impulse);
   for (const physics::ContactRecord& contact : marked) {
     const render::Vec3f point = to_float(contact.point);
+    // The normal the way the impulse arrow drawn first pushes: A's where A moves, else B's (a block
+    // on the ground shows both pointing up, out of the ground).
+    const float facing = moves(bodies, contact.body_a) ? 1.0f : -1.0f;
     if (draw.contact_normals)
-      add_arrow(list, point, to_float(contact.normal) * float(scales.normal_length), mark_colour::contact_normal, normal_layer);
+      add_arrow(list, point, facing * to_float(contact.normal) * float(scales.normal_length), mark_colour::contact_normal, normal_layer);
     const bool resting = contact.normal_impulse < draw.faint_below * strongest;
     const render::Colour normal_colour = resting ? faint(mark_colour::normal_impulse) : mark_colour::normal_impulse;
     const render::Colour friction_colour = resting ? faint(mark_colour::friction_impulse) : mark_colour::friction_impulse;

@@ -62,6 +62,37 @@ TEST(ContactDots, AreAtMostAQuarterOfTheSmallerBody) {
   }
 }
 
+// A contact's normal is drawn the way the impulse arrow drawn at it pushes: for a box on the ground
+// both point up, whichever body the contact names first; between two moving bodies, A's way.
+TEST(ContactNormals, PointTheWayTheDrawnImpulsePushes) {
+  std::vector<physics::Body> bodies(3);
+  bodies[0].shape = physics::Shape::plane(physics::Vec3::UnitY(), 0);
+  bodies[0].inv_mass = 0;  // the ground: static
+  bodies[1].shape = physics::Shape::box(physics::Vec3(0.5, 0.1, 0.3));
+  bodies[2].shape = physics::Shape::sphere(0.1);
+  bodies[1].inv_mass = bodies[2].inv_mass = 1;  // the box and the ball move
+  for (const bool ground_first : {true, false}) {
+    physics::ContactRecord on_ground = ground_first ? contact(0, 1, 0.0, 1.0) : contact(1, 0, 0.0, 1.0);
+    on_ground.normal = physics::Vec3(0, ground_first ? -1 : 1, 0);  // the way A must move
+    physics::ContactRecord ball_on_box = contact(2, 1, 0.2, 0.5);
+    ball_on_box.normal = physics::Vec3::UnitY();
+    const demos::Scene scene;
+    const render::DrawList list = demos::scene_draw_list(scene, bodies, demos::poses_of(bodies), {}, {on_ground, ball_on_box},
+                                                         demos::ArrowScales{}, render::Camera{});
+    std::vector<render::Vec3f> normals, impulses;
+    for (const render::ArrowItem& arrow : list.arrows) {
+      const auto same = [&](const render::Colour& c) { return arrow.colour.r == c.r && arrow.colour.g == c.g && arrow.colour.b == c.b; };
+      if (same(demos::mark_colour::contact_normal)) normals.push_back(arrow.direction);
+      if (same(demos::mark_colour::normal_impulse)) impulses.push_back(arrow.direction);
+    }
+    ASSERT_EQ(normals.size(), 2u);
+    ASSERT_EQ(impulses.size(), 3u);  // the box's on the ground; the ball's and the box's between them
+    EXPECT_GT(normals[0].y(), 0) << "ground first: " << ground_first;
+    EXPECT_GT(impulses[0].y(), 0) << "ground first: " << ground_first;
+    EXPECT_GT(normals[1].dot(impulses[1]), 0) << "the ball's (A's) push and the normal agree";
+  }
+}
+
 // The legend names the sleeping look in a film where a moving body falls asleep, and only there: a
 // ball dropped onto the ground sleeps within its 2 s with [world] sleeping on, and never with it off.
 TEST(Legend, NamesTheSleepingLookWhereABodyFallsAsleep) {
