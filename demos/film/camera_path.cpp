@@ -29,6 +29,26 @@ CameraPath::CameraPath(const Scene& scene) : start_(to_render(scene.camera)) {
   }
 }
 
+void CameraPath::fit(const Eigen::AlignedBox3d& extent, double aspect) {
+  if (extent.isEmpty()) return;
+  const Eigen::Vector3d eye = start_.position.cast<double>(), target = start_.target.cast<double>();
+  const Eigen::Vector3d forward = (target - eye).normalized();
+  const Eigen::Vector3d side = std::abs(forward.y()) > 0.999 ? Eigen::Vector3d::UnitX() : forward.cross(Eigen::Vector3d::UnitY()).normalized();
+  const Eigen::Vector3d up = side.cross(forward);
+  const double ty = std::tan(start_.fov_y_degrees * M_PI / 360) * kFitShare, tx = ty * aspect;
+  // A corner q from the centre, at distance D along the line of sight: in view where
+  // |q . side| <= (D + q . forward) tx and |q . up| <= (D + q . forward) ty.
+  const Eigen::Vector3d centre = extent.center();
+  double distance = 0;
+  for (int k = 0; k < 8; ++k) {
+    const Eigen::Vector3d q = extent.corner(Eigen::AlignedBox3d::CornerType(k)) - centre;
+    distance = std::max({distance, std::abs(q.dot(side)) / tx - q.dot(forward), std::abs(q.dot(up)) / ty - q.dot(forward)});
+  }
+  distance = std::max(distance, 0.5 * extent.diagonal().norm() + 0.1);  // in front of all it frames
+  start_.target = centre.cast<float>();
+  start_.position = (centre - distance * forward).cast<float>();
+}
+
 render::Camera CameraPath::at(double time, const physics::Vec3& followed_position) {
   if (followed_body_ >= 0) {
     const double elapsed = std::max(0.0, time - last_time_);

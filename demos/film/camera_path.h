@@ -6,6 +6,8 @@
 #include "physics/math.h"
 #include "render/draw_list.h"
 
+#include <Eigen/Geometry>
+
 namespace impulse::demos {
 
 class CameraPath {
@@ -16,6 +18,11 @@ class CameraPath {
   // (ignored without follow). Call with non-decreasing times: following is smoothed.
   render::Camera at(double time, const physics::Vec3& followed_position);
   int followed_body() const { return followed_body_; }  // -1 without follow
+  // [camera] fit: aimed at the centre of `extent` and moved along its line of sight (its direction
+  // and field of view kept) until every corner of `extent` is in view of a frame `aspect` wide to
+  // 1 high, within kFitShare of its half-widths (the rest for the overlay's edges).
+  void fit(const Eigen::AlignedBox3d& extent, double aspect);
+  static constexpr double kFitShare = 0.85;
 
  private:
   render::Camera start_;

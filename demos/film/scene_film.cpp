@@ -35,6 +35,7 @@ std::vector<std::unique_ptr<SceneFilm>> SceneFilm::together(const std::vector<co
     largest.impulse_to_fit = std::max(largest.impulse_to_fit, summary.impulse_to_fit);
     largest.largest_speed = std::max(largest.largest_speed, summary.largest_speed);
     largest.someone_sleeps = largest.someone_sleeps || summary.someone_sleeps;
+    largest.moving_extent.extend(summary.moving_extent);  // the panes share one camera
     largest.plot_maxima.resize(std::max(largest.plot_maxima.size(), summary.plot_maxima.size()), 0.0);
     for (size_t k = 0; k < summary.plot_maxima.size(); ++k)
       largest.plot_maxima[k] = std::max(largest.plot_maxima[k], summary.plot_maxima[k]);
@@ -45,6 +46,7 @@ std::vector<std::unique_ptr<SceneFilm>> SceneFilm::together(const std::vector<co
     summary.impulse_to_fit = largest.impulse_to_fit;
     summary.largest_speed = largest.largest_speed;
     summary.someone_sleeps = largest.someone_sleeps;
+    summary.moving_extent = largest.moving_extent;
     summary.plot_maxima.assign(largest.plot_maxima.begin(), largest.plot_maxima.begin() + summary.plot_maxima.size());
     film->develop(width, height, summary);
   }
@@ -75,6 +77,7 @@ void SceneFilm::develop(int width, int height, const TakeSummary& summary) {
     // equation panel, the bodies parting), are on screen together.
     if (labelled_peak_.frame >= 0) labelled_peak_.frame = (labelled_peak_.frame + last) / 2;
   }
+  if (scene_.camera_motion.fit) camera_path_.fit(summary.moving_extent, double(width) / height);
   scales_ = arrow_scales(scene_, summary);
   overlay_maker_.emplace(scene_, summary, scales_, width, height);
   overlay_maker_->set_body_paths(body_paths(width, height));

@@ -69,7 +69,12 @@ void WorldTake::step() {
     if (finished()) summary_.impulse_to_fit = impulse_to_fit(impulse_peaks_);
     if (impact) summary_.impact_times.push_back(record.time);
     for (const physics::Body& body : bodies)
-      if (!body.is_static()) summary_.largest_speed = std::max(summary_.largest_speed, double(body.velocity.norm()));
+      if (!body.is_static()) {
+        summary_.largest_speed = std::max(summary_.largest_speed, double(body.velocity.norm()));
+        const double reach = bounding_radius(body.shape);
+        summary_.moving_extent.extend(Eigen::Vector3d(body.position.array() - reach));
+        summary_.moving_extent.extend(Eigen::Vector3d(body.position.array() + reach));
+      }
   }
   for (const physics::Body& body : bodies)
     for (const physics::Real x : {body.position.x(), body.position.y(), body.position.z(), body.orientation.w(),

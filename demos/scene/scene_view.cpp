@@ -55,6 +55,9 @@ void read_camera(TableReader& top, Scene& scene) {
   }
   if (!scene.camera_motion.follow.empty() && !scene.camera_motion.keyframes.empty())
     r.fail(r.get("follow"), "follow", "use either follow or [[camera.keyframe]], not both");
+  scene.camera_motion.fit = r.boolean("fit", false);
+  if (scene.camera_motion.fit && (!scene.camera_motion.follow.empty() || !scene.camera_motion.keyframes.empty()))
+    r.fail(r.get("fit"), "fit", "frames the whole run from one place: not with follow or [[camera.keyframe]]");
   r.finish();
 }
 

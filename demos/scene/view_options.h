@@ -68,6 +68,7 @@ struct CameraKeyframe {
 struct CameraMotion {
   std::string follow;                   // a body's name: the camera keeps its offset from it
   std::vector<CameraKeyframe> keyframes;  // sorted by time; the [camera] fields are the one at t = 0
+  bool fit = false;  // the camera aimed at, and moved along its line of sight until it sees, every moving body's whole path
 };
 
 // [playback]
