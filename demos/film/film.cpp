@@ -23,12 +23,20 @@ PaneLayout pane_layout(int panes, int width, int height, bool plots, bool captio
   const double gap = 8 * scale, top = 72 * scale;                  // under the title and the clock
   const double plots_band = plots_row ? 108 * scale : 0;           // a plot and its gaps
   const double plots_column = plots && !plots_row ? 300 * scale : 0;
-  const double captions_band = rows == 1 || captions ? 100 * scale : 0;  // two lines of caption
+  // Three panes leave a cell of the grid for the captions; two (a row) and four, a band under them.
+  const double captions_band = rows == 1 || (captions && panes == 4) ? 100 * scale : 0;  // two lines of caption
   const double room_width = width - plots_column - (columns + 1) * gap;
   const double room_height = height - top - plots_band - captions_band - rows * gap;
-  const double pane_width = std::min(room_width / columns, room_height / rows * width / height);
-  layout.width = int(pane_width) / 2 * 2;
-  layout.height = int(pane_width * height / width) / 2 * 2;
+  if (rows == 1) {  // of the frame's shape
+    const double pane_width = std::min(room_width / columns, room_height / rows * width / height);
+    layout.width = int(pane_width) / 2 * 2;
+    layout.height = int(pane_width * height / width) / 2 * 2;
+  } else {  // a grid fills the room, each pane between kNarrowest and kWidest wide to 1 high
+    constexpr double kNarrowest = 1.2, kWidest = 2.4;
+    const double cell_width = room_width / columns, cell_height = room_height / rows;
+    layout.width = int(std::min(cell_width, kWidest * cell_height)) / 2 * 2;
+    layout.height = int(std::min(cell_height, cell_width / kNarrowest)) / 2 * 2;
+  }
 
   const double block_width = columns * layout.width + (columns - 1) * gap;
   const double block_height = rows * layout.height + (rows - 1) * gap + plots_band;

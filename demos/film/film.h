@@ -23,10 +23,13 @@ struct Pane {
   std::string label;
 };
 
-// Where the panes go in a width x height frame: two side by side, three or four in a grid of two
-// columns, each of the frame's aspect, under a band for the title and clock. Under one row of
-// panes go the plots, in a row, and a band left for the captions; with two rows the plots take
-// the column at the right, and a band is left for the captions if there are any.
+// Where the panes go in a width x height frame, under a band for the title and clock: two side by
+// side, each of the frame's aspect; three or four in a grid of two columns that fills the room
+// (each pane 1.2 to 2.4 times as wide as high: a camera's field of view is vertical, so a wider
+// pane shows more of the scene's width at the same size). Under one row of panes go the plots, in
+// a row, and a band left for the captions; with two rows the plots take the column at the right,
+// and four panes leave a band for the captions if there are any (three leave the grid's fourth
+// cell).
 struct PaneLayout {
   int width = 0;                          // of each pane, pixels
   int height = 0;

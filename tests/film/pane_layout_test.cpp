@@ -20,7 +20,9 @@ bool overlap(const PaneLayout& layout, size_t a, size_t b) {
          q.y() < p.y() + layout.height;
 }
 
-TEST(PaneLayout, TwoSideBySideThreeOrFourInAGridEachOfTheFramesShape) {
+// Two side by side, each of the frame's shape; three or four in a grid that fills the frame's
+// width (beside the plots' column), each 1.2 to 2.4 times as wide as high.
+TEST(PaneLayout, TwoSideBySideOfTheFramesShapeThreeOrFourInAGridThatFillsTheWidth) {
   const PaneLayout one = demos::pane_layout(1, 1280, 720, true, true);
   EXPECT_EQ(one.width, 1280);
   EXPECT_EQ(one.height, 720);
@@ -30,10 +32,18 @@ TEST(PaneLayout, TwoSideBySideThreeOrFourInAGridEachOfTheFramesShape) {
         SCOPED_TRACE(std::to_string(panes) + (plots ? " panes, plots" : " panes") + (captions ? ", captions" : ""));
         const PaneLayout layout = demos::pane_layout(panes, 1280, 720, plots, captions);
         ASSERT_EQ(layout.origins.size(), size_t(panes));
-        EXPECT_NEAR(double(layout.width) / layout.height, 1280.0 / 720.0, 0.02);
+        if (panes == 2) {
+          EXPECT_NEAR(double(layout.width) / layout.height, 1280.0 / 720.0, 0.02);
+        } else {
+          EXPECT_GE(double(layout.width) / layout.height, 1.2);
+          EXPECT_LE(double(layout.width) / layout.height, 2.4);
+          // No margins at the sides: two columns and three gaps of 8 px fill the width left.
+          EXPECT_GE(2 * layout.width + 3 * 8, (plots ? 1280 - 300 : 1280) - 2);
+        }
         EXPECT_GE(layout.width, 460);  // more than a third of the frame
-        // Under one row, or with captions, a band of two caption lines (100 px) is left free.
-        const int bottom = panes == 2 || captions ? 720 - 100 : 720;
+        // Under one row, or with captions under four panes, a band of two caption lines (100 px) is
+        // left free; three leave the grid's fourth cell for them.
+        const int bottom = panes == 2 || (captions && panes == 4) ? 720 - 100 : 720;
         for (size_t i = 0; i < layout.origins.size(); ++i) {
           const Eigen::Vector2i& at = layout.origins[i];
           EXPECT_GE(at.x(), 0);
