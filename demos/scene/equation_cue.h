@@ -16,6 +16,7 @@ struct EquationCue {
   double size = 20;       // the letters' size, pixels at 720 lines (the frame's height scales it)
   std::string origin;     // "FILE:LINE: [[equation]] N field 'tex'" (or the --set argument)
   bool live = false;      // `tex` holds live values: shown from the first impact on
+  int pane = 0;           // in a comparison ([compare]), the pane (from 1) that shows it; 0: every pane
 };
 
 // The live values a brace group may hold: "{e}" becomes the impact's restitution, written with

@@ -207,6 +207,7 @@ std::vector<Scene> load_variants(const SceneFile& file, const std::vector<std::s
     scene.compare = CompareSpec{};
     std::erase_if(scene.checks, [&](const CheckSpec& check) { return check.pane != 0 && check.pane != int(i) + 1; });
     std::erase_if(scene.captions, [&](const CaptionCue& cue) { return cue.pane != 0 && cue.pane != int(i) + 1; });
+    std::erase_if(scene.equations, [&](const EquationCue& cue) { return cue.pane != 0 && cue.pane != int(i) + 1; });
     for (CaptionCue& cue : scene.captions) {
       cue.own = cue.pane != 0 || names_the_pane(cue.text);
       for (const auto& [name, value] : {std::pair{"{value}", compare.values[i]}, std::pair{"{label}", compare.labels[i]}})

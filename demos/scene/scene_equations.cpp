@@ -48,6 +48,11 @@ void read_equations(TableReader& top, Scene& scene) {
     if (cue.end <= cue.start) r.fail(r.get("end"), "end", "must come after start");
     cue.position = r.choice("position", cue.position, {"top-left", "top-right", "bottom-left", "bottom-right", "bottom"});
     cue.size = r.number("size", cue.size, 6, 100);
+    const int panes = int(scene.compare.values.size());
+    cue.pane = r.integer("pane", 0, 0, 4);
+    if (cue.pane > panes)
+      r.fail(r.get("pane"), "pane", panes == 0 ? "the scene has no [compare] table, so no panes"
+                                              : "the [compare] table has " + std::to_string(panes) + " panes");
     r.finish();
     scene.equations.push_back(std::move(cue));
   }

@@ -79,8 +79,8 @@ Scene SceneFile::scene(const std::vector<std::string>& settings) const {
   read_material_pairs(top, scene);
   read_joints(top, scene);
   read_view(top, scene);  // after the bodies, whose names it checks
-  read_equations(top, scene);  // after [playback]
   read_compare(top, scene);
+  read_equations(top, scene);  // after [playback], and [compare]: an equation may name a pane
   read_captions(top, scene);
   read_checks(top, scene);
   top.finish();

@@ -41,6 +41,6 @@ void read_view(TableReader& top, Scene& scene);
 void read_compare(TableReader& top, Scene& scene);  // [compare], before the checks that name a pane
 void read_captions(TableReader& top, Scene& scene);  // [[caption]], after [compare]: a caption may name a pane
 void read_checks(TableReader& top, Scene& scene);  // [[check]], after the bodies they name    // [camera], [video], [draw], [overlay], [[caption]], [playback]
-void read_equations(TableReader& top, Scene& scene);  // [[equation]], after [playback]
+void read_equations(TableReader& top, Scene& scene);  // [[equation]], after [playback] and [compare]
 
 }  // namespace impulse::demos

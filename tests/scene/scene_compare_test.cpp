@@ -95,7 +95,8 @@ TEST(CompareCaptions, EachPaneKeepsItsOwnWithItsValueAndLabel) {
   std::ofstream(path) << bob_scene("[0.2, 0.9]", "0.1", "0.1") +
                              "[[caption]]\ntext = \"e = {value} ({label})\"\n"
                              "[[caption]]\ntext = \"only the second\"\npane = 2\n"
-                             "[[caption]]\ntext = \"every pane\"\n";
+                             "[[caption]]\ntext = \"every pane\"\n"
+                             "[[equation]]\ntex = 'e = 0.9'\npane = 2\n";
   const SceneFile file(path.string());
   const Scene scene = file.scene();
   ASSERT_EQ(scene.compare.values, (std::vector<std::string>{"0.2", "0.9"}));
@@ -111,6 +112,10 @@ TEST(CompareCaptions, EachPaneKeepsItsOwnWithItsValueAndLabel) {
   EXPECT_EQ(panes[1].captions[1].text, "only the second");
   EXPECT_TRUE(panes[1].captions[1].own);
   EXPECT_FALSE(panes[1].captions[2].own);
+  // An equation of one pane is that pane's alone.
+  EXPECT_TRUE(panes[0].equations.empty());
+  ASSERT_EQ(panes[1].equations.size(), 1u);
+  EXPECT_EQ(panes[1].equations[0].tex, "e = 0.9");
 }
 
 }  // namespace
