@@ -115,6 +115,9 @@ struct OverlayPainter::Cairo {
   void draw_clock(const Overlay& overlay, const PartForm& form, const ScreenBox& box);
   void draw_caption(const Caption& caption, const PartForm& form, const ScreenBox& box);
   void draw_label(const std::string& text, const Colour& colour, const PartForm& form, const ScreenBox& box);
+  // A line from a label's anchor to its box where the box is further than kLeaderGap from it.
+  static constexpr double kLeaderGap = 14;  // pixels at 720 lines: the nearest spots are closer
+  void draw_leader(const OverlayLabel& label, int index, const ScreenBox& box);
   void draw_legend(const Overlay& overlay, const PartForm& form, const ScreenBox& box);
   void draw_plot(const Plot& plot, const PartForm& form, const ScreenBox& box);
   void composite_onto(Frame& frame);

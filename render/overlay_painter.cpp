@@ -171,10 +171,14 @@ void OverlayPainter::paint(const Overlay& overlay, Frame& frame) {
   c.clear_painted();
   c.result.elements.clear();
   c.result.dropped.clear();
+  c.result.leaders.clear();
   if (overlay.empty()) return;
 
   c.lay_out(overlay);
   const std::vector<Placement>& placements = c.layout.place(c.ground, c.requests);
+  for (size_t i = 0; i < c.parts.size(); ++i)  // the leaders first, under everything
+    if (c.parts[i].kind == PartKind::label && placements[i].size >= 0)
+      c.draw_leader(overlay.labels[c.parts[i].index], c.parts[i].index, placements[i].box);
   for (size_t i = 0; i < c.parts.size(); ++i) {
     const OverlayPart& part = c.parts[i];
     if (placements[i].size < 0) {

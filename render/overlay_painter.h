@@ -20,9 +20,15 @@ struct PaintedElement {
   std::string name;
   ScreenBox box;
 };
+// A label placed away from its anchor is joined to it by a leader line, drawn under everything.
+struct PaintedLeader {
+  int label = -1;     // index into Overlay::labels
+  Vec2f from, to;     // from the anchor to the nearest point of the label's box
+};
 struct PaintedLayout {
   std::vector<PaintedElement> elements;
   std::vector<std::string> dropped;
+  std::vector<PaintedLeader> leaders;
 };
 
 class OverlayPainter {

@@ -5,6 +5,7 @@
 
 #include "render/cairo_shapes.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace impulse::render {
@@ -258,6 +259,28 @@ void OverlayPainter::Cairo::add_labels(const Overlay& overlay) {
     request.avoid = label.avoid;
     request.lasting = false;  // it follows its anchor
   }
+}
+
+void OverlayPainter::Cairo::draw_leader(const OverlayLabel& label, int index, const ScreenBox& box) {
+  const Vec2f anchor = label.anchor;
+  if (!(anchor.x() >= 0 && anchor.y() >= 0 && anchor.x() <= width && anchor.y() <= height)) return;  // its arrow is off screen
+  const Vec2f nearest(std::clamp(anchor.x(), box.x, box.right()), std::clamp(anchor.y(), box.y, box.bottom()));
+  const Vec2f along = nearest - anchor;
+  if (along.norm() <= kLeaderGap * scale) return;
+  // It starts a little off the anchor (the arrow's tip stays clear) and ends at the box's edge.
+  const Vec2f from = anchor + along.normalized() * float(4 * scale);
+  cairo_t* cr = context.get();
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_move_to(cr, from.x(), from.y());
+  cairo_line_to(cr, nearest.x(), nearest.y());
+  cairo_set_line_width(cr, 4.0 * scale);
+  cairo_set_source_rgba(cr, 1, 1, 1, 0.9);
+  cairo_stroke_preserve(cr);
+  cairo_set_line_width(cr, 1.5 * scale);
+  set_colour(cr, {label.colour.r * 0.8f, label.colour.g * 0.8f, label.colour.b * 0.8f});
+  cairo_stroke(cr);
+  mark(std::min(from.x(), nearest.x()), std::min(from.y(), nearest.y()), std::abs(along.x()), std::abs(along.y()));
+  result.leaders.push_back({index, from, nearest});
 }
 
 // Bold text with a white halo, its baseline `kLabelSize` under the box's top.

@@ -111,6 +111,40 @@ void Film::next(FilmPicture& picture) {
   }
 }
 
+namespace {
+
+bool same_panel(const render::OverlayPanel& a, const render::OverlayPanel& b) {
+  return a.place == b.place && a.place != render::PanelPlace::at_corner && a.lines == b.lines && a.math.key == b.math.key &&
+         a.opacity == b.opacity;
+}
+
+// A panel that every one of `panes` shows alike (the same words and mathematics: not an impact's
+// numbers, which differ) is shown once, for the frame, so that the panes keep their room for the
+// bodies.
+std::vector<render::OverlayPanel> shared_panels(std::vector<render::OverlayPanel> panels, int panes) {
+  std::vector<render::OverlayPanel> kept;
+  std::vector<bool> taken(panels.size(), false);
+  for (size_t i = 0; i < panels.size(); ++i) {
+    if (taken[i]) continue;
+    std::vector<size_t> alike = {i};
+    for (size_t j = i + 1; j < panels.size(); ++j)
+      if (!taken[j] && panels[j].pane != panels[i].pane && same_panel(panels[i], panels[j]) &&
+          std::none_of(alike.begin(), alike.end(), [&](size_t k) { return panels[k].pane == panels[j].pane; }))
+        alike.push_back(j);
+    if (int(alike.size()) == panes) {
+      for (const size_t k : alike) taken[k] = true;
+      kept.push_back(std::move(panels[i]));
+      kept.back().pane = -1;
+    } else {
+      taken[i] = true;
+      kept.push_back(std::move(panels[i]));
+    }
+  }
+  return kept;
+}
+
+}  // namespace
+
 // The first pane's overlay for the whole frame (its captions under the panes); every pane's
 // labels, panels, bodies and own captions moved to where the pane is and kept inside it, its name
 // in it, and each plot's curves of every pane on the first pane's axes.
@@ -172,7 +206,7 @@ void Film::compose(std::vector<ScenePicture>& pictures, render::Overlay& overlay
   overlay = std::move(pictures.front().overlay);
   overlay.captions = std::move(captions);
   overlay.labels = std::move(labels);
-  overlay.panels = std::move(panels);
+  overlay.panels = shared_panels(std::move(panels), int(pictures.size()));
   overlay.plots = std::move(plots);
   overlay.plots_row_top = layout_.plots_row_top;
   overlay.panes = std::move(panes);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "demos/film/captions.h"
 
@@ -94,19 +95,27 @@ double still_after(double impact) { return std::ceil(impact * 1000 - 1e-6) / 100
 
 }  // namespace
 
-// Every moment's bodies on screen, the camera moving on as next() will move it.
+// Every moment's bodies on screen, the camera moving on as next() will move it; and the fixed
+// pivots of joints (what a pendulum hangs from is part of what it shows).
 std::vector<render::ScreenBox> SceneFilm::body_paths(int width, int height) const {
   BodyPaths paths(width, height);
   CameraPath camera_path = camera_path_;
   const int followed = camera_path.followed_body();
+  const float pivot = 12.0f * float(height) / 720;  // pixels round a pivot
   std::vector<render::OverlayBody> boxes;
   for (size_t i = 0; i < moments_.size(); ++i) {
     const std::vector<BodyPose>& poses = samples_[i].poses;
     const render::Camera camera = camera_path.at(moments_[i].time, followed >= 0 ? poses[followed].position : physics::Vec3::Zero());
+    const render::CameraView view = render::make_camera_view(camera, width, height);
     boxes.clear();
-    add_body_boxes(bodies_, poses, render::make_camera_view(camera, width, height), boxes);
+    add_body_boxes(bodies_, poses, view, boxes);
     for (const render::OverlayBody& body : boxes)
       if (body.moving) paths.add(body.box);
+    for (const physics::Joint& joint : take_.joints())
+      for (const auto& [body, anchor] : {std::pair{joint.body_a, joint.local_anchor_a}, std::pair{joint.body_b, joint.local_anchor_b}})
+        if (body == physics::kWorld)
+          if (const auto pixel = view.to_pixels(anchor.cast<float>()))
+            paths.add({pixel->x() - pivot, pixel->y() - pivot, 2 * pivot, 2 * pivot});
   }
   return paths.boxes();
 }

@@ -76,6 +76,24 @@ std::string value_text(const toml::node& value) {
   return text.str();
 }
 
+// `text` with each {value} and {label} replaced by the pane's.
+void name_the_pane(std::string& text, const std::string& value, const std::string& label) {
+  for (const auto& [name, with] : {std::pair{std::string("{value}"), value}, std::pair{std::string("{label}"), label}})
+    for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + with.size())) text.replace(at, name.size(), with);
+}
+
+// Plain text for LaTeX's \text{}: its special characters written as themselves.
+std::string tex_text(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '\\') out += "\\textbackslash{}";
+    else if (c == '^' || c == '~') out += std::string("\\") + c + "{}";
+    else if (std::string_view("{}_%&#$").find(c) != std::string_view::npos) out += std::string("\\") + c;
+    else out += c;
+  }
+  return out;
+}
+
 }  // namespace
 
 void read_compare(TableReader& top, Scene& scene) {
@@ -210,10 +228,9 @@ std::vector<Scene> load_variants(const SceneFile& file, const std::vector<std::s
     std::erase_if(scene.equations, [&](const EquationCue& cue) { return cue.pane != 0 && cue.pane != int(i) + 1; });
     for (CaptionCue& cue : scene.captions) {
       cue.own = cue.pane != 0 || names_the_pane(cue.text);
-      for (const auto& [name, value] : {std::pair{"{value}", compare.values[i]}, std::pair{"{label}", compare.labels[i]}})
-        for (size_t at = cue.text.find(name); at != std::string::npos; at = cue.text.find(name, at + value.size()))
-          cue.text.replace(at, std::string(name).size(), value);
+      name_the_pane(cue.text, compare.values[i], compare.labels[i]);
     }
+    for (EquationCue& cue : scene.equations) name_the_pane(cue.tex, compare.values[i], "\\text{" + tex_text(compare.labels[i]) + "}");
   }
   if (varies_material(compare.key)) {
     bool all_same = true;

@@ -49,6 +49,8 @@ void read_equations(TableReader& top, Scene& scene) {
     cue.position = r.choice("position", cue.position, {"top-left", "top-right", "bottom-left", "bottom-right", "bottom"});
     cue.size = r.number("size", cue.size, 6, 100);
     const int panes = int(scene.compare.values.size());
+    if (panes == 0 && names_the_pane(cue.tex))
+      r.fail(r.get("tex"), "tex", "names a pane's {value} or {label}, but the scene has no [compare] table, so no panes");
     cue.pane = r.integer("pane", 0, 0, 4);
     if (cue.pane > panes)
       r.fail(r.get("pane"), "pane", panes == 0 ? "the scene has no [compare] table, so no panes"

@@ -1,6 +1,7 @@
 // Comparisons (film.h): worlds stepped together share their moments and slow down for any pane's
 // impact; eq. 8's panel is filled in with the hit's numbers.
 #include "demos/film/film.h"
+#include "render/camera_view.h"
 #include "tests/support/scene_scratch.h"
 
 #include <gtest/gtest.h>
@@ -93,6 +94,66 @@ TEST(Film, EachPanesOwnCaptionIsNamedForItsPaneAndTheFramesComeOnce) {
   EXPECT_EQ(picture.overlay.captions[1].pane, 0);
   EXPECT_EQ(picture.overlay.captions[2].text, "high's own");
   EXPECT_EQ(picture.overlay.captions[2].pane, 1);
+}
+
+// An equation that every pane shows alike is one panel for the frame; one that names each pane's
+// value stays in each pane.
+TEST(Film, AnEquationAllPanesShowAlikeIsOnePanelForTheFrame) {
+  const auto dir = testing::scratch("film_compare_test", "shared_panel");
+  const std::string same = "[[equation]]\ntex = 'J = m \\Delta v'\n";
+  const demos::Scene low = testing::scene_from(dir, drop(0.5) + same + "[[equation]]\ntex = 'h = 0.5'\nposition = \"top-left\"\n");
+  const demos::Scene high = testing::scene_from(dir, drop(1.5) + same + "[[equation]]\ntex = 'h = 1.5'\nposition = \"top-left\"\n");
+  demos::Film together({{&low, "low"}, {&high, "high"}}, 640, 360);
+  demos::FilmPicture picture;
+  together.next(picture);
+  together.next(picture);
+  int shared = 0, own[2] = {0, 0};
+  for (const render::OverlayPanel& panel : picture.overlay.panels) {
+    if (panel.pane < 0) ++shared;
+    else ++own[panel.pane];
+  }
+  EXPECT_EQ(shared, 1) << "J = m dv, once";
+  EXPECT_EQ(own[0], 1) << "h = 0.5";
+  EXPECT_EQ(own[1], 1) << "h = 1.5";
+}
+
+// What a pendulum hangs from is kept clear like the bodies' paths: the fixed pivot of a rod is in
+// the paths that lasting elements (equation panels, plots, the legend) keep off.
+TEST(Film, APivotIsKeptClearAsTheBodiesPathsAre) {
+  const auto dir = testing::scratch("film_compare_test", "pivot");
+  const demos::Scene scene = testing::scene_from(dir, R"(
+[scene]
+duration = 1.0
+[video]
+width = 320
+height = 180
+fps = 10
+[camera]
+position = [0, 1.5, 5]
+target = [0, 1.2, 0]
+[[body]]
+shape = "plane"
+[[body]]
+name = "bob"
+shape = "sphere"
+radius = 0.1
+position = [0.8, 1.2, 0]
+[[joint]]
+type = "rod"
+a = "world"
+b = "bob"
+anchor_a = [0.0, 2.0, 0.0]
+)");
+  demos::Film film({{&scene, ""}}, 320, 180);
+  demos::FilmPicture picture;
+  film.next(picture);
+  const render::CameraView view = render::make_camera_view(picture.panes[0].camera, 320, 180);
+  const auto pivot = view.to_pixels(render::Vec3f(0.0f, 2.0f, 0.0f));
+  ASSERT_TRUE(pivot);
+  bool kept_clear = false;
+  for (const render::ScreenBox& box : picture.overlay.body_paths)
+    kept_clear = kept_clear || (box.x <= pivot->x() && pivot->x() <= box.right() && box.y <= pivot->y() && pivot->y() <= box.bottom());
+  EXPECT_TRUE(kept_clear) << "the pivot at " << pivot->x() << ", " << pivot->y();
 }
 
 // [overlay] equation = "eq8": from the impact on, a panel fills eq. 8 in with the hit's numbers,

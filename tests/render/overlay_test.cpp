@@ -232,6 +232,48 @@ TEST(Overlay, EveryElementIsPaintedInsideItsReportedBoxAndNoTwoOverlap) {
   EXPECT_EQ(outside, 0) << "pixels painted outside every reported box";
 }
 
+// A label that cannot sit at its arrow's tip (a body all round it) is joined to it by a leader
+// line, from beside the anchor to the label's box, painted in the label's colour; one beside its
+// tip has none.
+TEST(Overlay, ALabelAwayFromItsAnchorIsJoinedToItByALeaderLine) {
+  constexpr int kW = 640, kH = 360;
+  const uint8_t background = 255;
+  render::Frame frame{kW, kH, std::vector<uint8_t>(size_t(kW) * kH * 4, background)};
+  render::Overlay overlay;
+  overlay.labels = {{render::Vec2f(320, 180), "J = 2.41 N\u00b7s", {0.0f, 0.45f, 0.7f}, {}},
+                    {render::Vec2f(80, 300), "J = 0.50 N\u00b7s", {0.0f, 0.45f, 0.7f}, {}}};
+  overlay.bodies = {{0, "block", {220, 90, 200, 180}, true}};  // the first label's anchor in its middle
+  render::OverlayPainter painter(kW, kH);
+  painter.paint(overlay, frame);
+  const render::PaintedLayout& layout = painter.layout();
+  ASSERT_EQ(layout.leaders.size(), 1u);
+  const render::PaintedLeader& leader = layout.leaders[0];
+  EXPECT_EQ(leader.label, 0);
+  EXPECT_LT((leader.from - overlay.labels[0].anchor).norm(), 6.0f) << "it starts beside the anchor";
+  const render::ScreenBox* box = nullptr;
+  for (const render::PaintedElement& element : layout.elements)
+    if (element.name == "label 1") box = &element.box;
+  ASSERT_NE(box, nullptr);
+  // Off the body, but for the layout's coarse grid (it sums bodies into cells: a pixel or two).
+  const render::ScreenBox& body = overlay.bodies[0].box;
+  const float across = std::min(box->right(), body.right()) - std::max(box->x, body.x);
+  const float down = std::min(box->bottom(), body.bottom()) - std::max(box->y, body.y);
+  EXPECT_TRUE(across <= 2 || down <= 2) << "the label left the body: " << box->x << " " << box->y << " " << box->w << " " << box->h;
+  EXPECT_LT(std::abs(leader.to.x() - std::clamp(leader.to.x(), box->x, box->right())) +
+                std::abs(leader.to.y() - std::clamp(leader.to.y(), box->y, box->bottom())), 0.5f) << "it ends at the box";
+  // Painted along its length in the label's colour: bluish pixels within a pixel of each point.
+  for (const float share : {0.25f, 0.5f, 0.75f}) {
+    const render::Vec2f at = leader.from + (leader.to - leader.from) * share;
+    bool bluish = false;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const uint8_t* p = &frame.rgba[(size_t(std::lround(at.y()) + dy) * kW + size_t(std::lround(at.x()) + dx)) * 4];
+        bluish = bluish || (p[0] < 160 && p[2] > p[0] + 40);
+      }
+    EXPECT_TRUE(bluish) << "at " << share << " of the leader";
+  }
+}
+
 // A pane's own caption goes inside its pane, at its top; the frame's caption under the panes.
 TEST(Overlay, APanesOwnCaptionIsInsideItsPaneAndTheFramesUnderThePanes) {
   render::Frame frame{kWidth, kHeight, std::vector<uint8_t>(size_t(kWidth) * kHeight * 4, 255)};

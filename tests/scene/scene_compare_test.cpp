@@ -96,7 +96,8 @@ TEST(CompareCaptions, EachPaneKeepsItsOwnWithItsValueAndLabel) {
                              "[[caption]]\ntext = \"e = {value} ({label})\"\n"
                              "[[caption]]\ntext = \"only the second\"\npane = 2\n"
                              "[[caption]]\ntext = \"every pane\"\n"
-                             "[[equation]]\ntex = 'e = 0.9'\npane = 2\n";
+                             "[[equation]]\ntex = 'e = 0.9'\npane = 2\n"
+                             "[[equation]]\ntex = 'e = {value}, {label}'\n";
   const SceneFile file(path.string());
   const Scene scene = file.scene();
   ASSERT_EQ(scene.compare.values, (std::vector<std::string>{"0.2", "0.9"}));
@@ -112,10 +113,13 @@ TEST(CompareCaptions, EachPaneKeepsItsOwnWithItsValueAndLabel) {
   EXPECT_EQ(panes[1].captions[1].text, "only the second");
   EXPECT_TRUE(panes[1].captions[1].own);
   EXPECT_FALSE(panes[1].captions[2].own);
-  // An equation of one pane is that pane's alone.
-  EXPECT_TRUE(panes[0].equations.empty());
-  ASSERT_EQ(panes[1].equations.size(), 1u);
+  // An equation of one pane is that pane's alone; one naming the value and label gets each pane's,
+  // the label as LaTeX text (its brackets and underscores written as themselves).
+  ASSERT_EQ(panes[0].equations.size(), 1u);
+  EXPECT_EQ(panes[0].equations[0].tex, "e = 0.2, \\text{body[bob].restitution = 0.2}");
+  ASSERT_EQ(panes[1].equations.size(), 2u);
   EXPECT_EQ(panes[1].equations[0].tex, "e = 0.9");
+  EXPECT_EQ(panes[1].equations[1].tex, "e = 0.9, \\text{body[bob].restitution = 0.9}");
 }
 
 }  // namespace
