@@ -25,6 +25,7 @@ double tilt(const physics::Body& body) { return 2 * std::acos(std::min(1.0, std:
 double speed(const physics::Body& body, double reach) { return body.velocity.norm() + body.angular_velocity.norm() * reach; }
 double horizontal(const Vec3& v) { return std::hypot(v.x(), v.z()); }
 
+const char* kTooWeak = "they sink: the position correction is too weak for 10 kg boxes (a larger beta, through eq. 13's denominator)";
 const char* kBaumgarte = "jn += beta / TimeStep() * (penetration - slop) / normDiv";
 
 // A push that does not grow with the mass it holds up; the listing's hack fix named where the
@@ -305,8 +306,7 @@ GradeCaseSpec stack() {
       if (sunk_at < 0 && step_depth > kSunk) sunk_at = long(step);
       if (off_at < 0 && step > 0)
         for (const physics::ContactRecord& contact : run.contacts[step - 1])
-          if ((contact.body_a == top_index && contact.body_b == bottom_index) || (contact.body_a == bottom_index && contact.body_b == top_index))
-          {
+          if ((contact.body_a == top_index && contact.body_b == bottom_index) || (contact.body_a == bottom_index && contact.body_b == top_index)) {
             friction_before_off += contact.tangent_impulse.norm();
             push_before_off += std::abs(contact.normal_impulse);
           }
@@ -322,8 +322,7 @@ GradeCaseSpec stack() {
     if (!held && first(sunk_at, off_at) && first(sunk_at, leaning_at))
       verdict.hint = hack_fix_line(run.source) > 0 ? mass_blind_hint(run, "they sink")
                      : only_grew(depth)            ? never_corrected_hint(sunk)
-                                                   : "they sink: the position correction is too weak for 10 kg boxes (a larger beta, "
-                                                     "through eq. 13's denominator)";
+                                                   : kTooWeak;
     // No friction: none but the rounding of the response's floats, read back from the momenta.
     else if (!on && first(off_at, leaning_at) && friction_before_off < 1e-4 * push_before_off)
       verdict.hint = "the top box slid off with no friction holding it: the contacts between the boxes took no tangent impulse "
@@ -333,7 +332,7 @@ GradeCaseSpec stack() {
       verdict.hint = "the top box slid off or toppled: a contact pushes and never pulls (jn >= 0), and friction holds it "
                      "only up to mu jn; e applied to the small approaches of resting boxes throws them about";
     else if (!held)
-      verdict.hint = "they sink: the position correction is too weak for 10 kg boxes (a larger beta, through eq. 13's denominator)";
+      verdict.hint = kTooWeak;
     return verdict;
   };
   return spec;
