@@ -134,8 +134,9 @@ OverlayLayout::Candidate OverlayLayout::cost(const LayoutRequest& request, const
   for (const ScreenSegment& line : request.avoid)
     if (segment_meets(line.from, line.to, box)) candidate.hard += kSegmentWeight;
   // The panes' area exactly, not by cells: inside a pane every place covers the same.
-  for (const ScreenBox& pane : panes_) {
-    const ScreenBox common = intersection(pane, box);
+  for (size_t i = 0; i < panes_.size(); ++i) {
+    if (int(i) == request.home) continue;
+    const ScreenBox common = intersection(panes_[i], box);
     candidate.cover += kPaneWeight * common.w * common.h / (cell_ * cell_);
   }
   candidate.soft = distance(request, box, first) + cell_ * candidate.cover;

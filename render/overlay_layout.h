@@ -53,6 +53,9 @@ struct LayoutRequest {
   // An earlier request it goes under when it can (-1: none), e.g. the second plot of a column under
   // the first wherever that went: its first spot is then just under that element's box.
   int under = -1;
+  // Its own pane in the ground's panes (-1: none): covering it costs nothing (a pane's equation
+  // panel belongs there), others' cost as any pane does.
+  int home = -1;
 };
 
 // What the elements go over.

@@ -148,7 +148,11 @@ void OverlayPainter::Cairo::add_panels(const Overlay& overlay) {
       case PanelPlace::bottom_right: request.spots = {{Vec2f(right, bottom), Vec2f(1, 1)}}; break;
       case PanelPlace::bottom: request.spots = {{Vec2f((left + right) / 2, bottom), Vec2f(0.5f, 1)}}; break;
     }
-    if (in_pane) request.bounds = area;
+    // In its pane, or under it where the pane is full (the frame's band below a comparison).
+    if (in_pane) {
+      request.home = panel.pane;
+      request.bounds = {area.x, area.y, area.w, std::max(area.h, request.bounds.bottom() - area.y)};
+    }
   }
 }
 

@@ -292,5 +292,34 @@ TEST(Overlay, APanesOwnCaptionIsInsideItsPaneAndTheFramesUnderThePanes) {
   EXPECT_GE(placed["caption 1"].y, pane.y + pane.h) << "the frame's caption is under the panes";
 }
 
+// A pane's equation panel stays in its pane while a place there keeps off where the bodies go;
+// where every place in it would cover their paths, it goes under its pane, in its pane's column.
+TEST(Overlay, APanesPanelGoesUnderItsPaneRatherThanOverTheBodiesPaths) {
+  constexpr int kW = 640, kH = 360;
+  render::Frame frame{kW, kH, std::vector<uint8_t>(size_t(kW) * kH * 4, 255)};
+  render::Overlay overlay;
+  overlay.panes = {{{8, 40, 300, 200}, "one", {0.0f, 0.45f, 0.7f}}, {{332, 40, 300, 200}, "two", {0.8f, 0.4f, 0.0f}}};
+  const render::ScreenBox path{20, 50, 276, 180};  // pane one's bodies sweep it nearly whole
+  overlay.body_paths = {path};
+  render::OverlayPanel panel;
+  panel.place = render::PanelPlace::top_left;
+  panel.lines = {"eq. 8", "J = 3.40 N\u00b7s"};
+  panel.pane = 0;
+  overlay.panels = {panel, panel};
+  overlay.panels[1].pane = 1;
+  render::OverlayPainter painter(kW, kH);
+  painter.paint(overlay, frame);
+  std::map<std::string, render::ScreenBox> placed;
+  for (const render::PaintedElement& element : painter.layout().elements) placed[element.name] = element.box;
+  ASSERT_TRUE(placed.count("panel 1") && placed.count("panel 2"));
+  const render::ScreenBox one = placed["panel 1"], two = placed["panel 2"];
+  const render::ScreenBox& pane = overlay.panes[0].box;
+  EXPECT_FALSE(render::overlaps(one, path)) << one.x << " " << one.y << " " << one.w << " " << one.h;
+  EXPECT_TRUE(render::contains({pane.x, pane.y, pane.w, float(kH) - pane.y}, one)) << "in its pane's column";
+  EXPECT_GT(one.bottom(), pane.bottom()) << "under its pane";
+  EXPECT_TRUE(render::contains(overlay.panes[1].box, two)) << "a pane with room keeps its panel";
+  EXPECT_LT(two.y, overlay.panes[1].box.y + 40) << "at its top left";
+}
+
 }  // namespace
 }  // namespace impulse
