@@ -4,10 +4,35 @@
 #include "demos/command_options.h"
 #include "demos/interrupts.h"
 
+#include "render/gl_context.h"
+
+#include <cstdlib>
 #include <exception>
+#include <string>
 #include <unistd.h>
 
+#ifndef IMPULSE_COMMIT
+#define IMPULSE_COMMIT "unknown"
+#endif
+
 namespace impulse::demos {
+namespace {
+
+// The program's commit, and what OpenGL draws with here (a context made the way a render makes one).
+std::string version_text() {
+  std::string text = std::string("impulse (commit ") + IMPULSE_COMMIT + ")\n";
+  try {
+    const render::GlContext context;
+    const render::GlInfo& info = context.info();
+    text += std::string("OpenGL: ") + render::gl_backend_name(info.backend) + ", " + info.device + ": " + info.renderer + ", " +
+            info.version;
+  } catch (const std::exception& error) {
+    text += std::string("OpenGL: none works here: ") + error.what();
+  }
+  return text;
+}
+
+}  // namespace
 
 int run_program(int argc, char** argv) {
   CLI::App app{"impulse: rigid-body collision physics rendered into teaching videos, headless.\n"
@@ -18,12 +43,23 @@ int run_program(int argc, char** argv) {
                              "  impulse render assets/scenes/bounce.toml --set world.friction=false -o no_friction.mp4\n"
                              "  impulse compare assets/scenes/bounce.toml --vary world.method=impulse,penalty\n"
                              "  impulse simulate assets/scenes/bounce.toml --trace bodies.csv --world world.csv\n"
-                             "  impulse catalogue -o out                                  # every scene of assets/scenes\n"));
+                             "  impulse catalogue -o out                                  # every scene of assets/scenes\n"
+                             "  impulse --gl osmesa render assets/scenes/bounce.toml      # drawn through OSMesa, not EGL\n"));
   app.require_subcommand(1);
   app.fallthrough();  // -q and --progress also after the subcommand
   bool quiet = false, force_progress = false;
   app.add_flag("-q,--quiet", quiet, "No progress bar on stderr");
   app.add_flag("--progress", force_progress, "A progress bar even when stderr is not a terminal (e.g. in a log)");
+  // Set in the environment, so that the program's child processes draw the same way.
+  app.add_option_function<std::string>("--gl", [](const std::string& name) { setenv("IMPULSE_GL", name.c_str(), 1); },
+                                       "OpenGL from: auto (EGL, else OSMesa; default), egl (a GPU, else Mesa's llvmpipe) "
+                                       "or osmesa (llvmpipe); also IMPULSE_GL")
+      ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+  app.add_option_function<int>("--gpu", [](int gpu) { setenv("IMPULSE_GPU", std::to_string(gpu).c_str(), 1); },
+                               "Draw on this GPU (EGL device, from 0) or fail; default: the first GPU, else software; "
+                               "also IMPULSE_GPU")
+      ->check(CLI::Range(0, 255));
+  app.set_version_flag("--version", version_text, "The program's commit and what OpenGL draws with here, then exit");
 
   Commands commands(app);
   add_render_command(commands);

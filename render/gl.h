@@ -1,9 +1,4 @@
-// The one way render/ includes OpenGL: core-profile declarations with prototypes, resolved
-// directly against libOSMesa. Do not mix with <GL/gl.h>.
-// libOSMesa exports the entry points of GL <= 4.4 only: the 4.5 direct-state-access functions
-// (glCreate*, glNamed*, glTexture*, glBindTextureUnit, ...) link-fail. Use bind-to-edit calls.
+// The one way render/ includes OpenGL: glad's core-profile 4.5 declarations, each a pointer
+// loaded from the current context's backend (gl_context.cpp). Do not mix with <GL/gl.h>.
 #pragma once
-#ifndef GL_GLEXT_PROTOTYPES
-#define GL_GLEXT_PROTOTYPES 1
-#endif
-#include <GL/glcorearb.h>
+#include <glad/gl.h>

@@ -1,7 +1,6 @@
 // RAII owners for OpenGL object names. Each generates its name on construction and deletes it on
 // destruction; move-only. The GL context must be current for both.
-// (glGen*, not the GL 4.5 glCreate*: libOSMesa does not export the 4.5 direct-state-access entry
-// points, so render/ uses bind-to-edit calls from GL <= 4.4 throughout.)
+// (glGen*, not the GL 4.5 glCreate*: render/ uses bind-to-edit calls from GL <= 4.4 throughout.)
 #pragma once
 #include <utility>
 

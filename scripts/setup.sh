@@ -6,7 +6,9 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev                                   # math
-  libosmesa6-dev                                  # offscreen OpenGL (llvmpipe)
+  libegl-dev libegl-mesa0 libgl1-mesa-dri         # offscreen OpenGL through EGL (a GPU, else Mesa's llvmpipe)
+  libosmesa6-dev                                  # ... or through OSMesa (llvmpipe; gone from Mesa 25.1)
+  python3-glad                                    # the OpenGL loader, generated at build time
   libpng-dev                                      # PNG frames
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # H.264 / MP4 (libx264 inside)
   libtomlplusplus-dev                             # scene files

@@ -2,7 +2,8 @@
 # Every test, the README's second command (.ci/run runs it):
 #   1. build      scripts/build.sh: the Release build in build/ (setup.sh first)
 #   2. ctest      every test of build/
-#   3. asan       every test again, AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)
+#   3. asan       every test again, AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/),
+#                 built without OSMesa (as on Mesa 25.1 and later): every render through EGL alone
 #   4. tsan       the threaded tests under ThreadSanitizer (build-tsan/): the solver's thread team
 #                 and the render pipeline's threads
 #   5. fuzz       the scene loader and --set under libFuzzer for FUZZ_SECONDS (built in build-asan/,
@@ -68,7 +69,7 @@ build_san() {  # build_san DIR SANITIZERS [CMake arguments...] -- [targets...]
 stage_build() { ./scripts/build.sh; }
 stage_ctest() { ctest --test-dir build --output-on-failure -j2; }
 stage_asan() {
-  build_san build-asan address,undefined -DIMPULSE_FUZZ=ON &&
+  build_san build-asan address,undefined -DIMPULSE_FUZZ=ON -DIMPULSE_OSMESA=OFF &&
     ctest --test-dir build-asan --output-on-failure -j2 -E "$asan_exclude"
 }
 stage_tsan() {
