@@ -3,8 +3,15 @@
 #include "demos/program.h"
 #include "tests/program/in_process.h"
 #include "tests/program/program_test_files.h"
+#include "render/gl_context.h"
 
 #include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace impulse {
 namespace {
@@ -26,6 +33,41 @@ TEST(Cli, OptionsWorkAfterTheSubcommandAndHelpShowsExamplesAndExitCodes) {
   EXPECT_NE(none.stderr_text.find("A subcommand is required"), std::string::npos) << none.stderr_text;
   const testing::ProgramRun unknown = run_in_process({"frobnicate"});
   EXPECT_EQ(unknown.exit_code, 1) << unknown.describe();
+}
+
+// --version names the commit and what OpenGL draws with here; --gl and --gpu choose it (through
+// the environment, so the program's child processes draw the same way); a backend or GPU that is
+// not there is refused in words.
+TEST(Cli, VersionSaysWhatDrawsAndGlChoosesIt) {
+  struct Kept {  // the test process's IMPULSE_GL and IMPULSE_GPU, as they were
+    std::vector<std::pair<std::string, std::optional<std::string>>> values;
+    Kept() {
+      for (const char* name : {"IMPULSE_GL", "IMPULSE_GPU"}) {
+        const char* value = std::getenv(name);
+        values.emplace_back(name, value ? std::optional<std::string>(value) : std::nullopt);
+      }
+    }
+    ~Kept() {
+      for (const auto& [name, value] : values) value ? setenv(name.c_str(), value->c_str(), 1) : unsetenv(name.c_str());
+    }
+  } kept;
+  unsetenv("IMPULSE_GL");
+  unsetenv("IMPULSE_GPU");
+  const ProgramRun version = run_in_process({"--version"});
+  ASSERT_TRUE(version.succeeded()) << version.describe();
+  EXPECT_EQ(version.stdout_text.rfind("impulse (commit ", 0), 0u) << version.stdout_text;
+  EXPECT_NE(version.stdout_text.find("OpenGL: egl, "), std::string::npos) << "auto prefers EGL: " << version.stdout_text;
+  EXPECT_NE(version.stdout_text.find("4.5 (Core Profile)"), std::string::npos) << version.stdout_text;
+  if (render::osmesa_built()) {
+    const ProgramRun osmesa = run_in_process({"--gl", "osmesa", "--version"});
+    EXPECT_NE(osmesa.stdout_text.find("OpenGL: osmesa, OSMesa: llvmpipe"), std::string::npos) << osmesa.describe();
+    EXPECT_STREQ(std::getenv("IMPULSE_GL"), "osmesa") << "set for the program's child processes";
+  }
+  const ProgramRun unknown = run_in_process({"--gl", "vulkan", "--version"});
+  EXPECT_EQ(unknown.exit_code, 1) << unknown.describe();
+  EXPECT_NE(unknown.stderr_text.find("auto,egl,osmesa"), std::string::npos) << unknown.stderr_text;
+  const ProgramRun gpu = run_in_process({"--gl", "egl", "--gpu", "200", "--version"});
+  EXPECT_NE(gpu.stdout_text.find("OpenGL: none works here: EGL: no GPU 200"), std::string::npos) << gpu.describe();
 }
 
 // --antialias chooses; --samples alone still means multisampling; the two saying different things
