@@ -1,10 +1,19 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages impulse needs, only those that are missing.
+# Installs the Debian 12 packages that building and rendering need (the program, the Python
+# package, the .deb), only those that are missing; with --tests, the test tools too (GoogleTest,
+# pytest, the sanitizers' clang, the fuzzer, Chromium, Slurm, the benchmarks' peers).
 # Idempotent and quiet when everything is already there. Runs apt-get as root or through sudo.
 set -euo pipefail
 
+case "${1:-}" in
+  "") tests=false ;;
+  --tests) tests=true ;;
+  *) echo "setup: unknown argument '$1'; run setup.sh (building and rendering) or setup.sh --tests (and testing)" >&2; exit 1 ;;
+esac
+
 packages=(
   build-essential cmake pkg-config
+  file                                            # the .deb (cpack -G DEB): its dependencies, found by dpkg-shlibdeps
   libeigen3-dev                                   # math
   libegl-dev libegl-mesa0 libgl1-mesa-dri         # offscreen OpenGL through EGL (a GPU, else Mesa's llvmpipe)
   libosmesa6-dev                                  # ... or through OSMesa (llvmpipe; gone from Mesa 25.1)
@@ -19,6 +28,8 @@ packages=(
   texlive-latex-base dvisvgm librsvg2-dev         # typeset equations: LaTeX -> SVG (tex/), drawn by librsvg
   pybind11-dev python3-dev python3-numpy         # the Python package (demos/python), for Debian's python3
   python3-tqdm python3-matplotlib python3-pandas  # ... its progress bar, and what its notebook plots and tabulates
+)
+$tests && packages+=(
   libgtest-dev                                    # tests
   nlohmann-json3-dev                              # tests: reading the JSON the program writes (--layout-report)
   python3-pytest python3-nbconvert python3-ipykernel   # tests: the Python package, the notebook in a real kernel

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every test, the README's second command (.ci/run runs it):
-#   1. build      scripts/build.sh: the Release build in build/ (setup.sh first)
+#   1. build      scripts/build.sh --tests: the Release build in build/, tests and all (setup.sh --tests first)
 #   2. ctest      every test of build/
 #   3. asan       every test again, AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/),
 #                 built without OSMesa (as on Mesa 25.1 and later): every render through EGL alone
@@ -17,7 +17,7 @@ root=$(pwd)
 jobs=$(nproc)
 FUZZ_SECONDS=${FUZZ_SECONDS:-150}
 
-./scripts/setup.sh || { echo "0 passed, 1 failed (setup)"; exit 1; }
+./scripts/setup.sh --tests || { echo "0 passed, 1 failed (setup)"; exit 1; }
 
 san="$root/tests/sanitizers"
 # exitcode/halt: a finding fails the test; the suppressions name system libraries only.
@@ -66,7 +66,7 @@ build_san() {  # build_san DIR SANITIZERS [CMake arguments...] -- [targets...]
     cmake --build "$dir" -j"$jobs" "${targets[@]}"
 }
 
-stage_build() { ./scripts/build.sh; }
+stage_build() { ./scripts/build.sh --tests; }
 stage_ctest() { ctest --test-dir build --output-on-failure -j2; }
 stage_asan() {
   build_san build-asan address,undefined -DIMPULSE_FUZZ=ON -DIMPULSE_OSMESA=OFF &&
