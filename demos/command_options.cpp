@@ -1,9 +1,11 @@
 #include "demos/command_options.h"
 
 #include "demos/film/moments.h"
+#include "render/video_encoder.h"
 
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -83,6 +85,11 @@ void add_video_options(CLI::App* command, VideoOverrides& overrides) {
 
 void add_output_options(CLI::App* command, OutputArguments& arguments, const std::string& output_help) {
   command->add_option("-o,--output", arguments.video_path, output_help);
+  command->add_option("--format", arguments.format,
+                      "mp4 (H.264: plays everywhere), webm (VP9: browsers, reveal.js), gif (loops; slides, "
+                      "chat) or png (every frame as NAME/frame_00000.png ...: for compositing); default: by -o's "
+                      "extension, else mp4")
+      ->check(CLI::IsMember({"mp4", "webm", "gif", "png"}));
   command->add_option("--png", arguments.png_directory, "Also write frames as PNG (frame_00000.png, ...) into this directory");
   command->add_option("--frames", arguments.frames, "With --png: only these frames, numbered from 0, e.g. 0,45,90");
   command->add_option("--at", arguments.moments,
@@ -96,18 +103,37 @@ void add_output_options(CLI::App* command, OutputArguments& arguments, const std
 
 RenderOptions output_options(const OutputArguments& arguments, const std::string& default_path) {
   RenderOptions options;
-  options.video_path = arguments.video_path.empty() ? default_path : arguments.video_path;
-  options.png_directory = arguments.png_directory;
+  const std::string& path = arguments.video_path;
+  const std::optional<render::VideoFormat> named = path.empty() ? std::nullopt : render::format_of_path(path);
+  const render::VideoFormat of_path = named.value_or(render::VideoFormat::mp4);
+  const bool frames_only = arguments.format == "png";
+  if (frames_only) {
+    if (named) throw std::invalid_argument("--format png writes frames into a directory: -o " + path + " names a video; give -o DIR");
+    if (!arguments.png_directory.empty()) throw std::invalid_argument("--format png writes every frame into -o's directory: leave --png out");
+    options.png_directory = path.empty() ? fs::path(default_path).replace_extension().string() : path;
+  } else {
+    if (!arguments.format.empty()) {
+      options.video_format = *render::format_of_path("." + arguments.format);
+      if (named && of_path != options.video_format)
+        throw std::invalid_argument("-o " + path + " is a ." + render::format_name(of_path) + " file but --format says " +
+                                    arguments.format + ": leave one out");
+    } else {
+      options.video_format = of_path;
+    }
+    options.video_path = !path.empty() ? path : fs::path(default_path).replace_extension(render::format_name(options.video_format)).string();
+    options.png_directory = arguments.png_directory;
+  }
   options.layout_report_path = arguments.layout_report;
+  const char* add_png = frames_only ? "" : ": add --png DIR";
   if (!arguments.frames.empty()) {
-    if (arguments.png_directory.empty()) throw std::invalid_argument("--frames chooses PNG frames: add --png DIR");
+    if (options.png_directory.empty()) throw std::invalid_argument(std::string("--frames chooses PNG frames") + add_png);
     options.png_frames = parse_frames(arguments.frames);
   }
   if (!arguments.moments.empty()) {
-    if (arguments.png_directory.empty()) throw std::invalid_argument("--at chooses PNG stills: add --png DIR");
+    if (options.png_directory.empty()) throw std::invalid_argument(std::string("--at chooses PNG stills") + add_png);
     options.moments = parse_moments(arguments.moments, "--at");
   }
-  if (arguments.video_path.empty()) fs::create_directories(fs::path(default_path).parent_path());
+  if (path.empty() && !frames_only) fs::create_directories(fs::path(options.video_path).parent_path());
   return options;
 }
 

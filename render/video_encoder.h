@@ -1,21 +1,33 @@
-// Frames -> H.264 MP4 (yuv420p, BT.709 tags, faststart) through libavformat/libavcodec/libswscale.
+// Frames -> a video file through libavformat/libavcodec/libswscale (and libavfilter for GIF's
+// palettes): H.264 MP4 (yuv420p, BT.709 tags, faststart), VP9 WebM (with an alpha channel where
+// asked: yuva420p) or an animated GIF (a palette made for each frame, dithered; loops for ever).
 // The file appears under its name only after finish(); until then it is `path + ".part"`, and an
 // encoder destroyed before finish() (e.g. by an exception) deletes it.
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "render/frame.h"
 
 namespace impulse::render {
 
+enum class VideoFormat { mp4, webm, gif };
+
+const char* format_name(VideoFormat format);  // "mp4", "webm", "gif": also the file's extension
+// The format a file name's extension names (.mp4, .webm, .gif, any case), if any.
+std::optional<VideoFormat> format_of_path(std::string_view path);
+
 struct VideoSettings {
+  VideoFormat format = VideoFormat::mp4;
+  bool alpha = false;  // WebM only: the frames' alpha kept (a transparent background over a slide)
   int width = 1280;   // both must be even (4:2:0 chroma)
   int height = 720;
   int fps = 30;
-  int crf = 20;       // x264 constant rate factor: 0 lossless .. 51 worst; ~18-23 looks clean
-  std::string preset = "ultrafast";  // x264's speed preset: ultrafast, superfast, veryfast, faster, ... medium
+  int crf = 20;       // x264 constant rate factor: 0 lossless .. 51 worst; ~18-23 looks clean (VP9: scaled to 0..63)
+  std::string preset = "ultrafast";  // x264's speed preset: ultrafast, superfast, veryfast, faster, ... medium (MP4 only)
   int threads = 0;                  // x264's threads; 0: its own choice (1.5 per core)
   std::string comment = "";         // the file's comment tag (e.g. how it was made); empty: none
 };

@@ -19,7 +19,7 @@ packages=(
   libosmesa6-dev                                  # ... or through OSMesa (llvmpipe; gone from Mesa 25.1)
   python3-glad                                    # the OpenGL loader, generated at build time
   libpng-dev                                      # PNG frames
-  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev   # H.264 / MP4 (libx264 inside)
+  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev libavfilter-dev   # H.264 MP4, VP9 WebM, GIF (libx264, libvpx inside; GIF's palettes by libavfilter)
   libtomlplusplus-dev                             # scene files
   libcli11-dev                                    # command line
   libseccomp-dev                                  # the sandbox of students' code (demos/response)

@@ -176,6 +176,7 @@ std::string settings_comment(const std::vector<Pane>& panes) {
 std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& panes, const RenderOptions& options) {
   const Scene& scene = *panes.at(0).scene;  // sets the video, the captions and the frame's overlay
   render::VideoSettings video = to_render(scene.video);
+  video.format = options.video_format;
   video.comment = settings_comment(panes);
   // The output first: a path that cannot be written is refused before any simulation.
   std::unique_ptr<render::VideoEncoder> encoder;

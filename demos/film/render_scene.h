@@ -10,6 +10,7 @@
 #include "physics/world.h"
 #include "render/draw_list.h"
 #include "render/renderer.h"
+#include "render/video_encoder.h"
 
 #include <functional>
 #include <string>
@@ -18,7 +19,8 @@
 namespace impulse::demos {
 
 struct RenderOptions {
-  std::string video_path;        // .mp4; empty: no video
+  std::string video_path;        // empty: no video
+  render::VideoFormat video_format = render::VideoFormat::mp4;
   std::string png_directory;     // empty: no PNG frames
   std::vector<int> png_frames;   // which frames become PNGs (numbered from 0); empty: all
   int png_spread = 0;            // > 1 (and no png_frames): that many, evenly from the first to the last

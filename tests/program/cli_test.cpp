@@ -3,6 +3,7 @@
 #include "demos/program.h"
 #include "tests/program/in_process.h"
 #include "tests/program/program_test_files.h"
+#include "tests/support/video_decode.h"
 #include "render/gl_context.h"
 
 #include <gtest/gtest.h>
@@ -68,6 +69,46 @@ TEST(Cli, VersionSaysWhatDrawsAndGlChoosesIt) {
   EXPECT_NE(unknown.stderr_text.find("auto,egl,osmesa"), std::string::npos) << unknown.stderr_text;
   const ProgramRun gpu = run_in_process({"--gl", "egl", "--gpu", "200", "--version"});
   EXPECT_NE(gpu.stdout_text.find("OpenGL: none works here: EGL: no GPU 200"), std::string::npos) << gpu.describe();
+}
+
+// A video's format comes from -o's extension or --format: the same frames as MP4, WebM and GIF,
+// or as PNG files into a directory; an extension and a --format that disagree are refused, and
+// nothing is written.
+TEST(Cli, FormatComesFromTheExtensionOrFormatAndContradictionsAreRefused) {
+  const fs::path dir = work_directory();
+  std::ofstream(dir / "slide.toml") << kSlide;
+  auto render = [&](std::vector<std::string> options) {
+    std::vector<std::string> arguments = {"-q", "render", (dir / "slide.toml").string(), "--width", "64", "--height", "48", "--fps", "5"};
+    arguments.insert(arguments.end(), options.begin(), options.end());
+    return run_in_process(arguments);
+  };
+  size_t frames = 0;
+  for (const char* name : {"a.mp4", "a.webm", "a.gif"}) {
+    const ProgramRun run = render({"-o", (dir / name).string()});
+    ASSERT_TRUE(run.succeeded()) << name << ": " << run.describe();
+    const testing::DecodedVideo video = testing::decode_video((dir / name).string());
+    EXPECT_EQ(video.width, 64) << name;
+    if (frames == 0) frames = video.frames.size();
+    EXPECT_EQ(video.frames.size(), frames) << name;
+  }
+  EXPECT_GT(frames, 5u);
+  const ProgramRun named = render({"--format", "webm", "-o", (dir / "b.video").string()});
+  ASSERT_TRUE(named.succeeded()) << named.describe();
+  EXPECT_EQ(testing::decode_video((dir / "b.video").string()).frames.size(), frames) << "--format over an unknown extension";
+  const ProgramRun png = render({"--format", "png", "-o", (dir / "frames").string()});
+  ASSERT_TRUE(png.succeeded()) << png.describe();
+  size_t pngs = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "frames")) pngs += entry.path().extension() == ".png";
+  EXPECT_EQ(pngs, frames);
+  for (const auto& [options, words] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--format", "gif", "-o", (dir / "c.mp4").string()}, "is a .mp4 file but --format says gif"},
+           {{"--format", "png", "-o", (dir / "c.gif").string()}, "give -o DIR"},
+           {{"--format", "png", "--png", (dir / "d").string(), "-o", (dir / "e").string()}, "leave --png out"}}) {
+    const ProgramRun refused = render(options);
+    EXPECT_EQ(refused.exit_code, 1) << refused.describe();
+    EXPECT_NE(refused.stderr_text.find(words), std::string::npos) << refused.stderr_text;
+  }
+  EXPECT_FALSE(fs::exists(dir / "c.mp4") || fs::exists(dir / "c.gif") || fs::exists(dir / "d") || fs::exists(dir / "e"));
 }
 
 // --antialias chooses; --samples alone still means multisampling; the two saying different things

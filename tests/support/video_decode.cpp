@@ -78,6 +78,10 @@ DecodedVideo decode_video(const std::string& path) {
   const int stream_index = av_find_best_stream(format.get(), AVMEDIA_TYPE_VIDEO, -1, -1, &decoder_codec, 0);
   if (stream_index < 0) fail(path, "no video stream", stream_index);
   const AVStream* stream = format->streams[stream_index];
+  // VP9 with an alpha channel (WebM's alpha_mode): FFmpeg's own VP9 decoder drops the alpha, libvpx's keeps it.
+  const AVDictionaryEntry* alpha_mode = av_dict_get(stream->metadata, "alpha_mode", nullptr, 0);
+  if (stream->codecpar->codec_id == AV_CODEC_ID_VP9 && alpha_mode != nullptr && std::string(alpha_mode->value) == "1")
+    if (const AVCodec* libvpx = avcodec_find_decoder_by_name("libvpx-vp9")) decoder_codec = libvpx;
 
   ffmpeg::CodecContextHandle codec(avcodec_alloc_context3(decoder_codec));
   if (!codec) fail(path, "cannot allocate the decoder", AVERROR(ENOMEM));

@@ -1,4 +1,5 @@
-// Decodes a whole video file back into RGBA frames, for tests of the encoder and the demos.
+// Decodes a whole video file (MP4, WebM with its alpha, GIF) back into RGBA frames, for tests of
+// the encoder and the demos.
 #pragma once
 #include <string>
 #include <vector>
