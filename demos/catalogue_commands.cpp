@@ -13,15 +13,29 @@
 namespace impulse::demos {
 namespace {
 
+// The catalogue that came with the program, so that `impulse catalogue` works from any directory:
+// <prefix>/share/impulse/scenes beside an installed <prefix>/bin/impulse (cmake --install, the
+// .deb), else the source tree's assets/scenes (the program of a build tree).
+std::string catalogue_scenes() {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path self = fs::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const fs::path installed = self.parent_path().parent_path() / "share" / "impulse" / "scenes";
+    if (fs::is_directory(installed, error)) return installed.string();
+  }
+  return IMPULSE_SOURCE_SCENES;
+}
+
 struct CatalogueArguments {
-  std::string scenes_directory = "assets/scenes", out_directory = "out";
+  std::string scenes_directory = catalogue_scenes(), out_directory = "out";
   std::string shard;
   CatalogueChoice choice;
   VideoOverrides overrides;
 };
 
 struct GalleryArguments {
-  std::string scenes_directory = "assets/scenes", out_directory = "out";
+  std::string scenes_directory = catalogue_scenes(), out_directory = "out";
 };
 
 const std::string kCatalogueFooter = examples_footer(

@@ -38,6 +38,14 @@ try:
     import numpy  # noqa: F401  (every array the package gives is numpy's)
 except ImportError as error:
     raise ImportError(_import_error("numpy")) from error
+# Installed (cmake --install, the .deb): the sandbox's child and the workshop header, from here.
+try:
+    from ._installed import RESPONDER as _responder, INCLUDE as _include
+    _here = os.path.dirname(os.path.abspath(__file__))
+    os.environ.setdefault("IMPULSE_RESPOND", os.path.normpath(os.path.join(_here, _responder)))
+    os.environ.setdefault("IMPULSE_WORKSHOP_INCLUDE", os.path.normpath(os.path.join(_here, _include)))
+except ImportError:
+    pass
 try:
     from . import _impulse
 except ImportError as error:
