@@ -90,6 +90,9 @@ void add_output_options(CLI::App* command, OutputArguments& arguments, const std
                       "chat) or png (every frame as NAME/frame_00000.png ...: for compositing); default: by -o's "
                       "extension, else mp4")
       ->check(CLI::IsMember({"mp4", "webm", "gif", "png"}));
+  command->add_flag("--transparent", arguments.transparent,
+                    "No sky, no ground: the bodies, marks and overlay over a transparent background, to lay over a "
+                    "slide (WebM or PNG frames: -o NAME.webm, or --format png)");
   command->add_option("--png", arguments.png_directory, "Also write frames as PNG (frame_00000.png, ...) into this directory");
   command->add_option("--frames", arguments.frames, "With --png: only these frames, numbered from 0, e.g. 0,45,90");
   command->add_option("--at", arguments.moments,
@@ -123,6 +126,10 @@ RenderOptions output_options(const OutputArguments& arguments, const std::string
     options.video_path = !path.empty() ? path : fs::path(default_path).replace_extension(render::format_name(options.video_format)).string();
     options.png_directory = arguments.png_directory;
   }
+  if (arguments.transparent && !frames_only && options.video_format != render::VideoFormat::webm)
+    throw std::invalid_argument(std::string("--transparent needs WebM or PNG frames (-o NAME.webm, or --format png): ") +
+                                render::format_name(options.video_format) + " keeps no alpha");
+  options.renderer.transparent = arguments.transparent;
   options.layout_report_path = arguments.layout_report;
   const char* add_png = frames_only ? "" : ": add --png DIR";
   if (!arguments.frames.empty()) {

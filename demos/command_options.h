@@ -31,14 +31,15 @@ struct OutputArguments {
   std::string moments;        // --at 0.5,1,2
   std::string layout_report;  // --layout-report FILE.json
   std::string format;         // --format mp4|webm|gif|png; empty: by -o's extension
+  bool transparent = false;   // --transparent
 };
-// -o (with `output_help`), --format, --png, --frames, --at, --layout-report.
+// -o (with `output_help`), --format, --transparent, --png, --frames, --at, --layout-report.
 void add_output_options(CLI::App* command, OutputArguments& arguments, const std::string& output_help);
 // The render options they ask for: the video (at `default_path` with the format's extension, its
 // directory made, when -o is not given) in the format --format or -o's extension names (MP4 when
 // neither does), or with --format png every frame as PNG into -o's directory; the PNG frames and
 // stills. Throws std::invalid_argument for --frames or --at without --png, a list that is not one,
-// or a --format that -o's extension contradicts.
+// a --format that -o's extension contradicts, or --transparent where the format keeps no alpha.
 RenderOptions output_options(const OutputArguments& arguments, const std::string& default_path);
 
 // --shard K/N (catalogue, grade): 1 <= K <= N <= 1000. Throws std::invalid_argument otherwise.

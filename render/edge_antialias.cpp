@@ -59,7 +59,7 @@ void mix(std::array<int, 4> parts, const uint8_t* self, const uint8_t* right, co
     taken = parts[0] + parts[1] + parts[2] + parts[3];
   }
   const int keep = kWhole - taken;
-  for (int channel = 0; channel < 3; ++channel) {
+  for (int channel = 0; channel < 4; ++channel) {  // alpha too: a transparent frame's outline takes in its coverage
     const int mixed = self[channel] * keep + parts[kPlusX] * right[channel] + parts[kMinusX] * left[channel] +
                       parts[kPlusY] * up[channel] + parts[kMinusY] * down[channel];
     out[channel] = uint8_t((mixed + kWhole / 2) / kWhole);

@@ -112,7 +112,8 @@ void OverlayPainter::Cairo::clear_painted() {
   painted.clear();
 }
 
-// out = overlay + frame * (1 - overlay alpha), cairo's ARGB32 being premultiplied, native-endian
+// out = overlay + frame * (1 - overlay alpha), alpha too (over an opaque frame it stays 255; a
+// transparent frame is premultiplied, as cairo's ARGB32 is), native-endian
 // 32-bit words (B, G, R, A in memory on little-endian machines); the frame is R, G, B, A bytes.
 // Each pixel once, even where painted rectangles overlap.
 void OverlayPainter::Cairo::composite_onto(Frame& frame) {
@@ -138,6 +139,7 @@ void OverlayPainter::Cairo::composite_onto(Frame& frame) {
         out[0] = static_cast<uint8_t>(((pixel >> 16) & 255) + (out[0] * keep + 127) / 255);
         out[1] = static_cast<uint8_t>(((pixel >> 8) & 255) + (out[1] * keep + 127) / 255);
         out[2] = static_cast<uint8_t>((pixel & 255) + (out[2] * keep + 127) / 255);
+        out[3] = static_cast<uint8_t>(alpha + (out[3] * keep + 127) / 255);
       }
       done = std::max(done, end);
     }

@@ -243,7 +243,8 @@ void Renderer::Gpu::draw_marks() {
   glEnable(GL_BLEND);
   // The edge image (if any) keeps the nearer of the ghost's outline and the body's behind it.
   glBlendEquationi(1, GL_MAX);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  // Colour over what is there; alpha adds up (over an opaque frame it stays 1).
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glDepthFunc(GL_GREATER);
   glDepthMask(GL_FALSE);
   draw_all(kArrowGhostAlpha);
@@ -270,7 +271,8 @@ void Renderer::Gpu::draw_ground(const DrawList& draw_list, const CameraView& cam
 }
 
 void Renderer::Gpu::clear(const Colour& colour) const {
-  glClearColor(colour.r, colour.g, colour.b, 1.0f);
+  if (settings.transparent) glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  else glClearColor(colour.r, colour.g, colour.b, 1.0f);
   glClearDepth(1.0);
   glDepthMask(GL_TRUE);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -285,7 +287,7 @@ void Renderer::Gpu::prepare_background(const DrawList& draw_list, const CameraVi
   if (!background_key || !(*background_key == key)) {
     background->bind_for_drawing();
     clear(draw_list.background);
-    if (draw_list.ground) draw_ground(draw_list, camera);
+    if (draw_list.ground && !settings.transparent) draw_ground(draw_list, camera);
     background_key = key;
   }
   background->copy_samples_to(target);
@@ -378,9 +380,10 @@ void Renderer::draw_into(const DrawList& draw_list, ReadBack& read_back) {
     gpu.clear(draw_list.background);
     gpu.target.clear_edges();
     gpu.draw_bodies();
-    if (draw_list.ground) gpu.draw_ground(draw_list, camera);
+    if (draw_list.ground && !gpu.settings.transparent) gpu.draw_ground(draw_list, camera);
   }
-  if (draw_list.ground && gpu.settings.shadows == ShadowMethod::ground) gpu.draw_ground_shadows(draw_list);
+  if (draw_list.ground && !gpu.settings.transparent && gpu.settings.shadows == ShadowMethod::ground)
+    gpu.draw_ground_shadows(draw_list);
   gpu.draw_marks();
 
   gpu.target.read_into(read_back);

@@ -39,6 +39,9 @@ struct RendererSettings {
   ShadowMethod shadows = ShadowMethod::ground;
   int shadow_map_size = 2048;   // texels a side, for ShadowMethod::shadow_map
   SphereMethod spheres = SphereMethod::impostor;
+  // No sky, no ground, no ground shadows: alpha 0 where nothing is drawn, for laying the frames
+  // over a slide. The frame is then premultiplied (colour times alpha) until unpremultiply().
+  bool transparent = false;
 };
 
 class Renderer {

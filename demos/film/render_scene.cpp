@@ -177,6 +177,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   const Scene& scene = *panes.at(0).scene;  // sets the video, the captions and the frame's overlay
   render::VideoSettings video = to_render(scene.video);
   video.format = options.video_format;
+  video.alpha = options.renderer.transparent;
   video.comment = settings_comment(panes);
   // The output first: a path that cannot be written is refused before any simulation.
   std::unique_ptr<render::VideoEncoder> encoder;
@@ -205,6 +206,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
   FramePipeline pipeline(kFramesInFlight, [&](FrameJob& job) {
     if (job.drawn_unfinished) render::finish(job.drawn, job.frame);
     painter.paint(job.overlay, job.frame);
+    if (options.renderer.transparent) render::unpremultiply(job.frame);
     if (job.video_frame < 0) {  // a still
       if (!options.png_directory.empty()) render::write_png(still_file(options.png_directory, job.time), job.frame);
       if (options.on_still) options.on_still(job.time, job.frame, job.poses);
@@ -249,7 +251,7 @@ std::vector<std::vector<CheckResult>> render_panes(const std::vector<Pane>& pane
     if (job.drawn_unfinished) {
       renderer.draw_into(picture->panes.front(), job.drawn);
     } else {
-      render::fill(job.frame, video.width, video.height, kBetweenPanes);
+      render::fill(job.frame, video.width, video.height, kBetweenPanes, options.renderer.transparent ? 0.0f : 1.0f);
       for (size_t i = 0; i < picture->panes.size(); ++i) {
         renderer.draw_into(picture->panes[i], pane_frame);
         render::paste(pane_frame, layout.origins[i].x(), layout.origins[i].y(), job.frame);

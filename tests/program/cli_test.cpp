@@ -100,10 +100,23 @@ TEST(Cli, FormatComesFromTheExtensionOrFormatAndContradictionsAreRefused) {
   size_t pngs = 0;
   for (const auto& entry : fs::directory_iterator(dir / "frames")) pngs += entry.path().extension() == ".png";
   EXPECT_EQ(pngs, frames);
+  // --transparent: WebM keeps the alpha, no sky or ground in it; a format without alpha is refused.
+  const ProgramRun clear = render({"--transparent", "-o", (dir / "clear.webm").string()});
+  ASSERT_TRUE(clear.succeeded()) << clear.describe();
+  const testing::DecodedVideo over_a_slide = testing::decode_video((dir / "clear.webm").string());
+  ASSERT_EQ(over_a_slide.frames.size(), frames);
+  int transparent = 0, opaque = 0;
+  for (size_t i = 3; i < over_a_slide.frames.back().rgba.size(); i += 4) {
+    transparent += over_a_slide.frames.back().rgba[i] <= 4;
+    opaque += over_a_slide.frames.back().rgba[i] >= 251;
+  }
+  EXPECT_GT(transparent, 64 * 48 / 2) << "sky and ground left out";
+  EXPECT_GT(opaque, 20) << "the bodies and the overlay";
   for (const auto& [options, words] : std::vector<std::pair<std::vector<std::string>, std::string>>{
            {{"--format", "gif", "-o", (dir / "c.mp4").string()}, "is a .mp4 file but --format says gif"},
            {{"--format", "png", "-o", (dir / "c.gif").string()}, "give -o DIR"},
-           {{"--format", "png", "--png", (dir / "d").string(), "-o", (dir / "e").string()}, "leave --png out"}}) {
+           {{"--format", "png", "--png", (dir / "d").string(), "-o", (dir / "e").string()}, "leave --png out"},
+           {{"--transparent", "-o", (dir / "c.mp4").string()}, "--transparent needs WebM or PNG frames"}}) {
     const ProgramRun refused = render(options);
     EXPECT_EQ(refused.exit_code, 1) << refused.describe();
     EXPECT_NE(refused.stderr_text.find(words), std::string::npos) << refused.stderr_text;
