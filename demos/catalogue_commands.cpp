@@ -24,6 +24,8 @@ std::string catalogue_scenes() {
     const fs::path installed = self.parent_path().parent_path() / "share" / "impulse" / "scenes";
     if (fs::is_directory(installed, error)) return installed.string();
   }
+  // From the source tree's root, the name a user types, which the messages then say.
+  if (fs::equivalent("assets/scenes", IMPULSE_SOURCE_SCENES, error)) return "assets/scenes";
   return IMPULSE_SOURCE_SCENES;
 }
 
