@@ -1,5 +1,5 @@
 // Listing 1 of the workshop "Impulse Response", corrected as its errata say (ERRATA.md in the
-// workshop's notes; README.md, "For students"). What changed from listing1.cpp, line by line:
+// workshop's notes; docs/students.md). What changed from listing1.cpp, line by line:
 //   - the pair's coefficient of restitution instead of e = 0 (line 71), and none below a closing
 //     speed of 0.5 m/s: e on every tiny approach makes a resting body jiggle;
 //   - a position correction that grows with the mass it must hold up instead of the "hack fix"

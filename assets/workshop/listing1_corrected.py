@@ -1,6 +1,6 @@
 """Listing 1 of the workshop "Impulse Response", corrected as its errata say, in Python: the
 same function as listing1_corrected.cpp, line for line, for `impulse.grade` and
-`impulse.load(..., response=add_collision_impulse)` (README.md, "From Python").
+`impulse.load(..., response=add_collision_impulse)` (docs/python.md).
 
 The listing's members are snake_case numpy arrays (impulse.RigidBody); Transform(v, M) is v @ M,
 and an inertia matrix is symmetric, so M @ v is the same.
