@@ -23,8 +23,9 @@ def _import_error(missing):
         built, built_version = "/usr/bin/python3", "Debian's"
     this = f"{sys.executable} ({sys.version_info.major}.{sys.version_info.minor})"
     other = os.path.realpath(sys.executable) != os.path.realpath(built)
+    package = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # build/python, or the prefix's
     run_built = (f" The package was built for {built} ({built_version}), which has numpy: run that one, e.g. "
-                 f"PYTHONPATH=build/python {built}." if other else "")
+                 f"PYTHONPATH={package} {built}." if other else "")
     if missing == "numpy":
         return (f"impulse needs numpy, which this Python lacks: {this}.{run_built} {'Or i' if other else 'I'}nstall "
                 f"numpy for this one: sudo apt-get install python3-numpy (Debian's python3), or {sys.executable} -m "
