@@ -24,6 +24,8 @@ struct alignas(64) ManifoldLanes {
   V3 normal, tangent1, tangent2;
   Real2 friction;
   Real2 turns_a, turns_b;          // 1 where the body's turning moves the points along the normal
+  Real2 face_of;                   // 1 where the normal is A's face's, 2 where B's (it turns with that body), else 0
+  V3 centres;                      // anchor_a - anchor_b: B's centre less A's at the step's start
   Real2 coupling[4][4];            // d(normal velocity at i) / d(impulse at j), for the points
   PairFactors factors[2];          // the factor each solve last used (pair_points.h): the relax solve's [0], the biased solve's [1]
   Real2 tangent_mass1, tangent_mass2, twist_mass;

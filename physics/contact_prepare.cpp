@@ -295,6 +295,11 @@ void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& bl
   m.turns_b = sb.inv_mass > 0 && m.radius_b == 0;
   block.turns_a[l] = m.turns_a;
   block.turns_b[l] = m.turns_b;
+  // A face's normal turns with its box: an incident corner is measured from the face as it is now.
+  const int reference = (first.feature >> 14) == 1 ? int((first.feature >> 12) & 1) : -1;
+  const bool turns = reference == 0 ? m.turns_a : reference == 1 ? m.turns_b : false;
+  block.face_of[l] = turns ? reference + 1 : 0;
+  set_lane(block.centres, l, first.anchor_a - first.anchor_b);
 }
 
 // The block of a place's manifold, its lane given the manifold's bodies (and emptied first, with

@@ -87,15 +87,25 @@ void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies
   const V3& normal = block.normal;
 
   // Each point's separation now (positions do not change during the passes) and normal velocity.
-  // The points share the normal: n . (dq r) = (dq^-1 n) . r turns the normal back once per body
-  // instead of turning every anchor. A sphere's surface stays put as it turns; a still body's dq is 1.
+  // A corner against a face is measured along the face's normal as it is now, n' (n turned with
+  // the face's body), so that a corner sliding along a turning face is measured from that face:
+  //   s = n'.(dp_a - dp_b + dq_a r_a - dq_b r_b - (r_a - r_b)) + separation
+  //     = separation_now() along n' + (r_a - r_b).(n - n')   (adjusted_separation is along n)
+  // The points share the normal: n'.(dq r) = (dq^-1 n').r turns it back once per body instead of
+  // turning every anchor. A sphere's surface stays put as it turns; a still body's dq is 1.
+  V3 normal_now = normal;
+  Real2 tilt = splat(0);
+  if (any(block.face_of != 0)) {
+    normal_now = select(block.face_of == 2, rotate(dq_b, normal), select(block.face_of == 1, rotate(dq_a, normal), normal));
+    tilt = dot(block.centres, normal - normal_now);
+  }
   auto turned_back = [&](const Q4& dq, Real2 turns) {
     const Mask2 mask = turns != 0;
-    return any(mask) ? select(mask, rotate(conjugate(dq), normal), normal) : normal;
+    return any(mask) ? select(mask, rotate(conjugate(dq), normal_now), normal_now) : normal_now;
   };
   const V3 normal_in_a = turned_back(dq_a, block.turns_a);
   const V3 normal_in_b = turned_back(dq_b, block.turns_b);
-  const Real2 moved = dot(dp, normal);
+  const Real2 moved = dot(dp, normal_now) + tilt;
   const Real2 dv_n = dot(va - vb, normal);
   const Real2 max_push = splat(-settings_.max_push_velocity);
   Real2 vn[N], impulse[N];

@@ -1,5 +1,7 @@
 #include "physics/shape.h"
 
+#include <limits>
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -34,6 +36,15 @@ Real bounding_radius(const Shape& shape) {
     case ShapeType::sphere: return shape.radius;
     case ShapeType::box: return shape.half_extents.norm();
     case ShapeType::plane: return 0;
+  }
+  return 0;
+}
+
+Real thinnest_half_size(const Shape& shape) {
+  switch (shape.type) {
+    case ShapeType::sphere: return shape.radius;
+    case ShapeType::box: return shape.half_extents.minCoeff();
+    case ShapeType::plane: return std::numeric_limits<Real>::infinity();
   }
   return 0;
 }

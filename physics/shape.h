@@ -34,6 +34,8 @@ Mat3 shape_unit_inertia(const Shape& shape);  // multiply by mass
 
 // Distance from the centre to the farthest point of a sphere or a box (0 for a plane).
 Real bounding_radius(const Shape& shape);
+// Half the shape's thinnest size: a sphere's radius, a box's smallest half extent (a plane: infinite).
+Real thinnest_half_size(const Shape& shape);
 
 // Why a shape is impossible ("radius must be > 0, got -1"), or empty when it is fine.
 std::string shape_problem(const Shape& shape);

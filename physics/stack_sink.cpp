@@ -4,6 +4,21 @@
 
 namespace impulse::physics {
 
+bool moving_overlap_too_deep(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, Real overlap, Real speed) {
+  auto moving = [&](const Body& body) {
+    return !body.is_static() && body.velocity.norm() + body.angular_velocity.norm() * bounding_radius(body.shape) > speed;
+  };
+  for (const Contact& c : contacts) {
+    if (c.separation >= 0) continue;
+    const Body& a = bodies[c.body_a];
+    const Body& b = bodies[c.body_b];
+    if (!moving(a) && !moving(b)) continue;
+    const Real thinnest = 2 * std::min(thinnest_half_size(a.shape), thinnest_half_size(b.shape));
+    if (-c.separation > std::min(overlap, thinnest / 20)) return true;
+  }
+  return false;
+}
+
 Real StackSink::deepest_give(const ContactSolver& solver, const std::vector<Body>& bodies, const Vec3& up, Real h) {
   const auto& body_of_slot = solver.body_of_slot();
   const int n = int(bodies.size());

@@ -34,4 +34,11 @@ class StackSink {
   std::vector<int> unsupported_below_, first_above_, next_above_, above_, ready_;
 };
 
+// Whether a contact of a moving body (its fastest point above `speed`, as sleep measures it)
+// overlaps more than `overlap` or a twentieth of the thinner body's thinnest size. A body squeezed
+// while it moves (a domino bouncing off the ground under the one that fell on it) sinks into soft
+// contacts further than its load alone presses it, and comes back out at their slow rate
+// (softness.h): stiffer contacts, more sub-steps, keep it within what a frame shows.
+bool moving_overlap_too_deep(const std::vector<Contact>& contacts, const std::vector<Body>& bodies, Real overlap, Real speed);
+
 }  // namespace impulse::physics

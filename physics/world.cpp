@@ -11,6 +11,7 @@ World::World(WorldSettings settings) : settings_(settings) {
   if (!(settings_.time_step > 0)) throw std::invalid_argument("time_step must be > 0");
   if (settings_.substeps < 1) throw std::invalid_argument("substeps must be >= 1");
   if (settings_.min_substeps < 1) throw std::invalid_argument("min_substeps must be >= 1");
+  if (!(settings_.moving_overlap >= 0)) throw std::invalid_argument("moving_overlap must be >= 0 (0: off)");
   if (!(settings_.stack_sink >= 0)) throw std::invalid_argument("stack_sink must be >= 0 (0: always `substeps` sub-steps)");
   if (settings_.threads < 0) throw std::invalid_argument("threads must be >= 0 (0: one per core)");
   if (settings_.response && settings_.method != ResponseMethod::workshop)
@@ -37,12 +38,12 @@ int World::add_joint(const JointDef& def) {
 
 void World::step() {
   const Real dt = settings_.time_step;
-  substeps_ = choose_substeps();
-  const Real h = dt / substeps_;
   const auto started = std::chrono::steady_clock::now();
   const int threads = share_chooser_.next_step_shares() ? team_->size() : 1;
 
   find_contacts(threads);
+  substeps_ = choose_substeps();
+  const Real h = dt / substeps_;
   // A bounce holds the joints of its bodies (contact_bounce.cpp), which reach beyond its two
   // bodies: with joints, one thread sweeps the contacts (the bits are the same for any count).
   contact_solver_.plan(contacts_, bodies_, settings_.pair_materials, *team_, joints_.empty() ? threads : 1);
@@ -84,14 +85,17 @@ constexpr Real kSecondsBeforeFewer = 1;
 }  // namespace
 
 // Fewer sub-steps while every stack would sink less than settings_.stack_sink into its soft
-// contacts at the stiffness they allow (stack_sink.h); more at once when a load comes.
+// contacts at the stiffness they allow (stack_sink.h) and no moving body overlaps another more
+// than settings_.moving_overlap (else the most); more at once when a load comes.
 int World::choose_substeps() {
   const bool adapts = settings_.method == ResponseMethod::impulse && settings_.stack_sink > 0 &&
                       settings_.min_substeps < settings_.substeps && settings_.gravity.squaredNorm() > 0;
   if (!adapts) return settings_.substeps;
   const Real give = stack_sink_.deepest_give(contact_solver_, bodies_, -settings_.gravity.normalized(), settings_.time_step / substeps_);
   const Real hertz = std::min(std::sqrt(give / settings_.stack_sink) / (2 * kPi), settings_.contact.contact_hertz);
-  const int needed = std::clamp(int(std::ceil(hertz * settings_.time_step / kMaxHertzPerSubstepRate)), settings_.min_substeps, settings_.substeps);
+  int needed = std::clamp(int(std::ceil(hertz * settings_.time_step / kMaxHertzPerSubstepRate)), settings_.min_substeps, settings_.substeps);
+  if (settings_.moving_overlap > 0 && moving_overlap_too_deep(contacts_, bodies_, settings_.moving_overlap, settings_.sleep.velocity_tolerance))
+    needed = settings_.substeps;
   // Each change of stiffness moves every resting body a little (its contacts settle anew): fewer
   // only after a second of needing fewer, and then at once to the most that second needed, so that
   // a settling pile changes once rather than at every step.

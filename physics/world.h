@@ -33,6 +33,9 @@ struct WorldSettings {
   int min_substeps = 4;            // at least, when no stack needs more:
   Real stack_sink = 0.007;         // m: as few sub-steps as keep every stack from sinking more than
                                    // this into its soft contacts (stack_sink.h); 0: always `substeps`
+  Real moving_overlap = 0.0025;    // m: a contact of a moving body overlapping more than this, or a
+                                   // twentieth of the thinner body's thinnest size, takes `substeps`
+                                   // (stack_sink.h); 0: off
   Real linear_slop = 0.005;        // m; speculative contacts start 4 slops away
   ResponseMethod method = ResponseMethod::impulse;
   bool printed_eq8_sign = false;   // workshop method only: eq. 8/13's numerator as printed, -(1 - e),

@@ -92,6 +92,7 @@ void read_world(TableReader& top, Scene& scene) {
   w.substeps = r.integer("substeps", w.substeps, 1, 64);
   w.min_substeps = r.integer("min_substeps", w.min_substeps, 1, 64);
   w.stack_sink = r.number("stack_sink", w.stack_sink, 0, 1);
+  w.moving_overlap = r.number("moving_overlap", w.moving_overlap, 0, 1);
   w.method = *physics::method_from_name(r.choice("method", "impulse", physics::method_names()));
   if (r.choice("eq8_sign", "corrected", {"corrected", "printed"}) == "printed") {
     if (w.method != physics::ResponseMethod::workshop)
