@@ -23,6 +23,12 @@ Body make_body(const BodyDef& def) {
   require(is_finite(def.position) && is_finite(def.velocity) && is_finite(def.angular_velocity),
           "position, velocity and angular velocity must be finite");
   require(is_finite(def.orientation) && def.orientation.norm() > Real(1e-9), "orientation must be a non-zero quaternion");
+  require(def.principal_inertia.isZero() ||
+              (is_finite(def.principal_inertia) && def.principal_inertia.minCoeff() > 0 &&
+               2 * def.principal_inertia.maxCoeff() <= def.principal_inertia.sum() * (1 + Real(1e-12))),
+          "principal_inertia must be three moments > 0, none larger than the other two together (a rigid body's), got [" +
+              std::to_string(def.principal_inertia.x()) + ", " + std::to_string(def.principal_inertia.y()) + ", " +
+              std::to_string(def.principal_inertia.z()) + "]");
   require(def.planar_axis >= kNotPlanar && def.planar_axis <= 2,
           "planar_axis must be 0, 1 or 2 (x, y, z) or kNotPlanar, got " + std::to_string(def.planar_axis));
 
@@ -37,7 +43,9 @@ Body make_body(const BodyDef& def) {
   if (!def.is_static && def.shape.type != ShapeType::plane) {
     body.mass = def.mass > 0 ? def.mass : def.density * shape_volume(def.shape);
     body.inv_mass = 1 / body.mass;
-    body.inertia_local = body.mass * shape_unit_inertia(def.shape);
+    body.inertia_local = !def.principal_inertia.isZero()          ? Mat3(def.principal_inertia.asDiagonal())
+                         : def.spread == MassSpread::hollow ? body.mass * shape_unit_shell_inertia(def.shape)
+                                                            : body.mass * shape_unit_inertia(def.shape);
     body.inv_inertia_local = body.inertia_local.inverse();
     body.velocity = def.velocity;
     body.angular_velocity = def.angular_velocity;

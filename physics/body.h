@@ -13,6 +13,10 @@ struct Material {
   int kind = -1;           // which of the scene's named materials, for its pairs (materials.h); -1: none
 };
 
+// How a body's mass is spread: through its volume, or over its surface (a thin shell: a ping-pong
+// ball, a hollow box).
+enum class MassSpread { solid, hollow };
+
 // What a scene asks for. Mass comes from `mass` when > 0, else from density x volume.
 struct BodyDef {
   std::string name;
@@ -20,6 +24,8 @@ struct BodyDef {
   bool is_static = false;  // infinite mass; planes are always static
   Real mass = 0;
   Real density = 1000;     // kg/m^3
+  MassSpread spread = MassSpread::solid;  // the inertia's, from the shape (the mass stays `mass`'s)
+  Vec3 principal_inertia = Vec3::Zero();  // kg m^2 about the body's own axes, in place of the shape's where set
   Material material;
   Vec3 position = Vec3::Zero();
   Quat orientation = Quat::Identity();

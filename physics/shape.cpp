@@ -31,6 +31,32 @@ Mat3 shape_unit_inertia(const Shape& shape) {
   return Mat3::Zero();
 }
 
+Mat3 shape_unit_shell_inertia(const Shape& shape) {
+  switch (shape.type) {
+    case ShapeType::sphere: return Mat3::Identity() * (Real(2) / 3 * shape.radius * shape.radius);
+    case ShapeType::box: {
+      // A face of half sizes u, v at distance d from the centre: about its normal (u^2 + v^2) / 3,
+      // about its side along v, v^2 / 3 + d^2 (parallel axes). The pair of faces across axis k
+      // carries the share (half sizes of the other two multiplied) / (the sum over the three pairs).
+      const Vec3 h = shape.half_extents, e2 = h.cwiseProduct(h);
+      const Vec3 share = Vec3(h.y() * h.z(), h.x() * h.z(), h.x() * h.y()) / (h.y() * h.z() + h.x() * h.z() + h.x() * h.y());
+      Vec3 moments = Vec3::Zero();
+      for (int axis = 0; axis < 3; ++axis)
+        for (int face = 0; face < 3; ++face) {
+          if (face == axis) {
+            moments[axis] += share[face] * (e2.sum() - e2[face]) / 3;
+          } else {
+            const int other = 3 - axis - face;  // the plate spans this axis across `axis`
+            moments[axis] += share[face] * (e2[other] / 3 + e2[face]);
+          }
+        }
+      return moments.asDiagonal();
+    }
+    case ShapeType::plane: return Mat3::Zero();
+  }
+  return Mat3::Zero();
+}
+
 Real bounding_radius(const Shape& shape) {
   switch (shape.type) {
     case ShapeType::sphere: return shape.radius;

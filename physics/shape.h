@@ -31,6 +31,9 @@ inline Vec3 box_corner(const Vec3& half, int index) {
 // Volume and the inertia tensor of unit density about the centre, in the local frame.
 Real shape_volume(const Shape& shape);
 Mat3 shape_unit_inertia(const Shape& shape);  // multiply by mass
+// The same for a thin shell, the mass on the surface: a sphere's 2/3 R^2 (5/3 of the solid's); a
+// box's six faces, each a thin plate with its share of the area.
+Mat3 shape_unit_shell_inertia(const Shape& shape);
 
 // Distance from the centre to the farthest point of a sphere or a box (0 for a plane).
 Real bounding_radius(const Shape& shape);

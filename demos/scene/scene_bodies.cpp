@@ -54,6 +54,16 @@ void read_body(const TableReader& top, const toml::table& table, int index, Scen
   if (shape == "plane" && !def.is_static) r.fail(r.get("static"), "static", "a plane is always static");
   def.mass = r.number("mass", 0, 0, kLargestMass, true);  // 0: from density
   def.density = r.number("density", def.density, 0, kLargestMass, true);
+  // "solid" (the mass through the volume), "hollow" (a thin shell), or the three principal moments.
+  if (const toml::node* inertia = r.get("inertia"); inertia && inertia->is_array()) {
+    def.principal_inertia = r.vec3("inertia", Vec3::Zero(), kLargestMass, "kg m\u00b2", "a lecture's bodies are lighter");
+    const Vec3 i = def.principal_inertia;
+    if (!(i.minCoeff() > 0) || 2 * i.maxCoeff() > i.sum() * (1 + 1e-12))
+      r.fail(inertia, "inertia",
+             "the three principal moments (kg m\u00b2, about the body's x, y, z) must be > 0, none larger than the other two "
+             "together, as a rigid body's are (a solid ball of 1 kg and 0.1 m: [0.004, 0.004, 0.004]); or say \"solid\" or \"hollow\"");
+  } else if (r.choice("inertia", "solid", {"solid", "hollow"}) == "hollow")
+    def.spread = physics::MassSpread::hollow;
   def.material.restitution = r.number("restitution", def.material.restitution, 0, 1);
   def.material.friction = r.number("friction", def.material.friction, 0);
   read_material_kind(r, scene, def);

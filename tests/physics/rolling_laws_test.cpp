@@ -1,0 +1,135 @@
+// Rolling as laws over generated scenes (generated_scenes.h): the same impulses, another inertia.
+// A ball of radius R and moment of inertia k m R^2 let go on an incline of angle theta rolls
+// without slipping where friction allows it (mu >= k / (1 + k) tan theta), and then
+//   m a = m g sin theta - F,  I alpha = F R,  a = alpha R   =>   a = g sin theta / (1 + k)
+// whatever its mass and radius: 5/7 of g sin theta for a solid ball (k = 2/5), 3/5 for a hollow one
+// (a thin shell, k = 2/3, `inertia = "hollow"`), and 1 / (1 + k) for three moments given
+// (`inertia = [I, I, I]`). The rolling race of section 4: the solid ball first, the shell after.
+#include "tests/physics/generated_scenes.h"
+
+#include <memory>
+
+namespace impulse::demos {
+namespace {
+
+using namespace laws;
+using physics::Real;
+using physics::Vec3;
+
+constexpr double kG = 9.81;
+constexpr double kFirst = 0.5, kLast = 1.5;  // s: the speeds compared (the contact settled by the first)
+
+struct Racer {
+  const char* name;
+  double k;  // I / (m R^2)
+};
+
+// An incline of 10 to 30 degrees (a tilted plane, or a static box turned as a ramp) and three balls
+// across it: solid, hollow, and one of moments drawn between 0.1 and 1 m R^2. Friction enough to
+// roll, from 1.5 times what the steepest needs to 1.
+std::string rolling_race(Draw& draw) {
+  const double degrees = draw.uniform(10, 30), theta = degrees * physics::kPi / 180;
+  const Vec3 up(std::sin(theta), std::cos(theta), 0);
+  const double k = draw.uniform(0.1, 1);
+  const double friction = draw.uniform(1.5 * std::max(k, 2.0 / 3) / (1 + std::max(k, 2.0 / 3)) * std::tan(theta), 1.0);
+  std::ostringstream text;
+  text << "[scene]\ntitle = \"rolling race\"\nduration = " << SceneText::number(kLast) << "\n";
+  if (draw.coin())
+    text << "[[body]]\nname = \"incline\"\nshape = \"plane\"\nnormal = " << SceneText::vector(up) << "\nfriction = "
+         << SceneText::number(friction) << "\n";
+  else
+    text << "[[body]]\nname = \"incline\"\nshape = \"box\"\nstatic = true\nsize = [40.0, 0.5, 6.0]\nposition = "
+         << SceneText::vector(-0.25 * up) << "\nrotation = " << SceneText::vector(Vec3(0, 0, -degrees)) << "\nfriction = "
+         << SceneText::number(friction) << "\n";
+  const char* inertia[3] = {"\"solid\"", "\"hollow\"", nullptr};
+  for (int i = 0; i < 3; ++i) {
+    const double radius = draw.uniform(0.05, 0.3);
+    const double mass = draw.uniform(0.1, 5);
+    const double moment = k * mass * radius * radius;
+    text << "[[body]]\nname = \"ball " << i << "\"\nshape = \"sphere\"\nradius = " << SceneText::number(radius)
+         << "\nmass = " << SceneText::number(mass) << "\nfriction = " << SceneText::number(friction)
+         << "\nposition = " << SceneText::vector(radius * up + Vec3(0, 0, i - 1.0)) << "\ninertia = "
+         << (inertia[i] ? std::string(inertia[i]) : SceneText::vector(Vec3::Constant(moment))) << "\n";
+  }
+  return text.str();
+}
+
+TEST(RollingLaws, ABallRollsDownAnInclineAtGSinThetaOverOnePlusK) {
+  // Each case's speeds down the incline at kFirst, kept until kLast.
+  auto first = std::make_shared<std::vector<double>>();
+  check_law("rolling-race", 40, rolling_race,
+            [first](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>& initial) {
+              const physics::Body& incline = initial[0];
+              const Vec3 up = incline.shape.type == physics::ShapeType::plane ? incline.shape.normal
+                                                                             : Vec3(incline.orientation * Vec3::UnitY());
+              const double sin_theta = up.x();
+              const Vec3 down(up.y(), -up.x(), 0);
+              const double t = world.time();
+              if (std::abs(t - kFirst) < 1e-9) {
+                first->clear();
+                for (size_t i = 1; i < world.bodies().size(); ++i) first->push_back(world.bodies()[i].velocity.dot(down));
+              }
+              if (std::abs(t - kLast) > 1e-9) return std::string();
+              const double ks[2] = {0.4, 2.0 / 3};  // solid, hollow
+              for (size_t i = 1; i < world.bodies().size(); ++i) {
+                const physics::Body& ball = world.bodies()[i];
+                const double k = i == 3 ? ball.inertia_local(0, 0) / (ball.mass * ball.shape.radius * ball.shape.radius) : ks[i - 1];
+                const double expected = kG * sin_theta / (1 + k);
+                const double measured = (ball.velocity.dot(down) - (*first)[i - 1]) / (kLast - kFirst);
+                if (std::abs(measured - expected) > 0.01 * expected) {
+                  std::ostringstream what;
+                  what << ball.name << " (k = " << k << "): acceleration down the incline (m/s^2), to be g sin theta / (1 + k) within 1 %:";
+                  return breach_text(what.str().c_str(), measured, expected);
+                }
+              }
+              return std::string();
+            });
+}
+
+// The incline's hollow ball is a thin shell, 5/3 of a solid ball's moment; a hollow cube's is a
+// closed form too: 5 m L^2 / 18 for a side L (each face a thin plate).
+TEST(RollingLaws, AHollowBodysInertiaIsItsShells) {
+  physics::BodyDef ball;
+  ball.shape = physics::Shape::sphere(0.3);
+  ball.mass = 2;
+  ball.spread = physics::MassSpread::hollow;
+  const physics::Body shell = physics::make_body(ball);
+  EXPECT_NEAR(shell.inertia_local(0, 0), 2.0 / 3 * 2 * 0.09, 1e-15);
+  EXPECT_NEAR(shell.inertia_local(1, 1), shell.inertia_local(2, 2), 0);
+  physics::BodyDef cube;
+  cube.shape = physics::Shape::box(Vec3::Constant(0.5));
+  cube.mass = 3;
+  cube.spread = physics::MassSpread::hollow;
+  const physics::Body box = physics::make_body(cube);
+  for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(box.inertia_local(axis, axis), 5.0 * 3 * 1.0 / 18, 1e-12);
+  // A flat hollow box (a closed tray of 2a x 2b x 2c): the six plates summed by hand.
+  physics::BodyDef tray;
+  tray.shape = physics::Shape::box(Vec3(0.4, 0.1, 0.2));
+  tray.mass = 1;
+  tray.spread = physics::MassSpread::hollow;
+  const physics::Body flat = physics::make_body(tray);
+  const double a = 0.4, b = 0.1, c = 0.2, total = b * c + a * c + a * b;
+  const double mx = b * c / total, my = a * c / total, mz = a * b / total;
+  EXPECT_NEAR(flat.inertia_local(0, 0), mx * (b * b + c * c) / 3 + my * (c * c / 3 + b * b) + mz * (b * b / 3 + c * c), 1e-15);
+  EXPECT_NEAR(flat.inertia_local(1, 1), my * (a * a + c * c) / 3 + mx * (c * c / 3 + a * a) + mz * (a * a / 3 + c * c), 1e-15);
+  EXPECT_NEAR(flat.inertia_local(2, 2), mz * (a * a + b * b) / 3 + mx * (b * b / 3 + a * a) + my * (a * a / 3 + b * b), 1e-15);
+  EXPECT_EQ(flat.inertia_local(0, 1), 0);
+}
+
+TEST(RollingLaws, GivenMomentsTakeThePlaceOfTheShapesAndMustBeARigidBodys) {
+  physics::BodyDef def;
+  def.shape = physics::Shape::box(Vec3(0.5, 0.2, 0.1));
+  def.mass = 1;
+  def.principal_inertia = Vec3(0.01, 0.02, 0.025);
+  EXPECT_EQ(physics::make_body(def).inertia_local.diagonal(), def.principal_inertia);
+  def.principal_inertia = Vec3(0.01, 0.02, 0.04);  // larger than the other two together
+  EXPECT_THROW(physics::make_body(def), std::invalid_argument);
+  def.principal_inertia = Vec3(0.01, 0, 0.01);
+  EXPECT_THROW(physics::make_body(def), std::invalid_argument);
+}
+
+// As GeneratedLaws.ASeedIsTheSameSceneWhateverTheCompiler, for this generator.
+TEST(RollingLaws, ASeedIsTheSameSceneWhateverTheCompiler) { EXPECT_EQ(scenes_hash("rolling-race", rolling_race), 0x51e0917e46c28396ull); }
+
+}  // namespace
+}  // namespace impulse::demos
