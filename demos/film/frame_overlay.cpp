@@ -1,6 +1,7 @@
 #include "demos/film/frame_overlay.h"
 
 #include "demos/film/body_boxes.h"
+#include "demos/film/render_types.h"
 #include "demos/film/captions.h"
 #include "demos/film/impulse_label.h"
 #include "render/flat_arrows.h"
@@ -90,9 +91,11 @@ void FrameOverlay::make(const FrameState& state, const PlotRecorder& plots, rend
   overlay.playback_highlight = state.slow_motion;
   overlay.legend = options.legend ? legend(scene_.draw, scales_, view, state.camera.target, summary_.someone_sleeps) : std::vector<render::LegendEntry>{};
   if (!options.plots.empty()) {
-    const int body = plotted_body(*state.bodies, options.plot_body);
-    overlay.plots = plots.plots(state.plotted_steps, scene_.duration, summary_.plot_maxima,
-                                body >= 0 ? (*state.bodies)[body].name : "");
+    std::vector<PlotCurve> curves;
+    for (const int body : plotted_bodies(*state.bodies, options.plot_bodies))
+      curves.push_back({(*state.bodies)[size_t(body)].name,
+                        size_t(body) < scene_.colours.size() ? to_render(scene_.colours[size_t(body)]) : render::Colour{}});
+    overlay.plots = plots.plots(state.plotted_steps, scene_.duration, summary_.plot_maxima, curves);
   } else {
     overlay.plots.clear();
   }

@@ -29,7 +29,7 @@ WorldTake::WorldTake(const Scene& scene)
       contacts_drawn_(scene.draw.contact_points || scene.draw.contact_normals || scene.draw.impulses ||
                       scene.draw.friction),
       checks_(scene.checks),
-      plots_(scene.overlay.plots, plotted_body(bodies_, scene.overlay.plot_body), scene.overlay.plot_from),
+      plots_(scene.overlay.plots, plotted_bodies(bodies_, scene.overlay.plot_bodies), scene.overlay.plot_from),
       hold_(scene.draw.contact_hold),
       before_(poses_of(bodies_)),
       after_(before_) {

@@ -43,7 +43,7 @@ void failure_video_settings(demos::Scene& scene, const std::string& hint) {
   for (const physics::BodyDef& body : scene.bodies)
     if (!body.is_static) {
       resting += body.mass * scene.world.gravity.norm() * scene.world.time_step;
-      scene.overlay.plot_body = body.name;
+      scene.overlay.plot_bodies = {body.name};
     }
   scene.playback.slow_motion_impulse = std::max(3 * resting, 0.05);
   scene.playback.speed = std::min(1.0, scene.duration / kShortestVideo);

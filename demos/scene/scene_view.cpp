@@ -120,7 +120,23 @@ void read_overlay(TableReader& top, Scene& scene) {
       else r.fail(node, "plots", "unknown plot '" + *name + "' (known: kinetic_energy, momentum, speed)");
     }
   }
-  o.plot_body = body_name(r, "plot_body", scene);
+  // One body's name, or several: the "speed" plot's curves.
+  if (const toml::node* node = r.get("plot_body"); node && node->is_array()) {
+    const char* expected = "must be a body's name or a list of them, like [\"solid ball\", \"hollow ball\"]";
+    o.plot_bodies.clear();
+    for (const toml::node& item : *node->as_array()) {
+      const auto name = item.value_exact<std::string>();
+      if (!name || find_body(scene, *name) < 0) {
+        std::string known;
+        for (const physics::BodyDef& body : scene.bodies) known += (known.empty() ? "'" : ", '") + body.name + "'";
+        r.fail(node, "plot_body", name ? "no body is named '" + *name + "' (bodies: " + known + ")" : std::string(expected));
+      }
+      o.plot_bodies.push_back(*name);
+    }
+    if (o.plot_bodies.empty()) r.fail(node, "plot_body", expected);
+  } else if (const std::string name = body_name(r, "plot_body", scene); !name.empty()) {
+    o.plot_bodies = {name};
+  }
   o.plot_from = r.number("plot_from", o.plot_from, 0);
   if (o.plot_from >= scene.duration) {
     char duration[32];

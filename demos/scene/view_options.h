@@ -51,7 +51,8 @@ struct OverlayOptions {
   bool clock = true;             // simulated time and playback speed, top right
   bool legend = true;            // what each arrow colour means, and its scale
   std::vector<PlotKind> plots;   // live plots down the right side
-  std::string plot_body;         // whose speed the "speed" plot shows (default: the first moving body)
+  std::vector<std::string> plot_bodies;  // whose speeds the "speed" plot shows (default: the first moving
+                                         // body); several: a curve each, in the body's colour
   double plot_from = 0;          // s: the plots' time axis starts here (to leave out a landing's spike)
   std::string label = "impulse"; // the arrow that gets its value written beside it: impulse, velocity, none
   std::string label_body;        // on which body (default: whichever has the largest)
