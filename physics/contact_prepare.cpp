@@ -3,6 +3,7 @@
 // coupling, friction at their centroid), last step's impulses found again by pair and feature, all
 // packed for the sweeps; and at the end of the step the impulses kept for the next.
 #include "physics/contact_solver.h"
+#include "physics/manifold.h"
 #include "physics/normal_impulse.h"
 #include "physics/restitution.h"
 
@@ -296,7 +297,7 @@ void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& bl
   block.turns_a[l] = m.turns_a;
   block.turns_b[l] = m.turns_b;
   // A face's normal turns with its box: an incident corner is measured from the face as it is now.
-  const int reference = (first.feature >> 14) == 1 ? int((first.feature >> 12) & 1) : -1;
+  const int reference = feature::face_of(first.feature);
   const bool turns = reference == 0 ? m.turns_a : reference == 1 ? m.turns_b : false;
   block.face_of[l] = turns ? reference + 1 : 0;
   set_lane(block.centres, l, first.anchor_a - first.anchor_b);

@@ -34,6 +34,8 @@ inline constexpr uint32_t edge_pair(int edge_a, int edge_b) {
 // -1 for a point that both boxes make (crossing edges, an incident edge cut by a side plane) and
 // for the single points of kind 0.
 inline constexpr int corner_of(uint32_t id) { return (id >> 14) == 1 && (id & 0x7f) < 8 ? int(1 - ((id >> 12) & 1)) : -1; }
+// Whose face the pair's normal is: 0 (A) or 1 (B) for a point against a reference face, -1 otherwise.
+inline constexpr int face_of(uint32_t id) { return (id >> 14) == 1 ? int((id >> 12) & 1) : -1; }
 }  // namespace feature
 
 // Keeps at most four of the contacts out[first..] (one pair's, sharing `normal`): the one
