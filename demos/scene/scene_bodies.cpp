@@ -55,7 +55,10 @@ void read_body(const TableReader& top, const toml::table& table, int index, Scen
   def.mass = r.number("mass", 0, 0, kLargestMass, true);  // 0: from density
   def.density = r.number("density", def.density, 0, kLargestMass, true);
   // "solid" (the mass through the volume), "hollow" (a thin shell), or the three principal moments.
-  if (const toml::node* inertia = r.get("inertia"); inertia && inertia->is_array()) {
+  const toml::node* inertia = r.get("inertia");
+  if (inertia && !inertia->is_array() && !inertia->is_string())
+    r.fail(inertia, "inertia", "must be \"solid\", \"hollow\" (a thin shell) or the three principal moments [Ix, Iy, Iz] in kg m\u00b2");
+  if (inertia && inertia->is_array()) {
     def.principal_inertia = r.vec3("inertia", Vec3::Zero(), kLargestMass, "kg m\u00b2", "a lecture's bodies are lighter");
     const Vec3 i = def.principal_inertia;
     if (!(i.minCoeff() > 0) || 2 * i.maxCoeff() > i.sum() * (1 + 1e-12))

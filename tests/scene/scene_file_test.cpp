@@ -40,6 +40,37 @@ TEST(SceneFile, LoadsTheBounceScene) {
   EXPECT_EQ(scene.video.fps, 30);
 }
 
+// [[body]] inertia: "solid" (the default), "hollow" or three moments; [overlay] plot_body: one
+// name or several, each a body's, in the file's order.
+TEST(SceneFile, InertiaAndPlotBodiesAreRead) {
+  const Scene scene = load_scene(write_scene("inertia", R"([[body]]
+name = "solid"
+shape = "sphere"
+[[body]]
+name = "shell"
+shape = "sphere"
+inertia = "hollow"
+[[body]]
+name = "given"
+shape = "box"
+inertia = [0.1, 0.2, 0.25]
+[overlay]
+plots = ["speed"]
+plot_body = ["shell", "solid"]
+)"));
+  ASSERT_EQ(scene.bodies.size(), 3u);
+  EXPECT_EQ(scene.bodies[0].spread, physics::MassSpread::solid);
+  EXPECT_TRUE(scene.bodies[0].principal_inertia.isZero());
+  EXPECT_EQ(scene.bodies[1].spread, physics::MassSpread::hollow);
+  EXPECT_EQ(scene.bodies[2].principal_inertia, physics::Vec3(0.1, 0.2, 0.25));
+  EXPECT_EQ(scene.overlay.plot_bodies, (std::vector<std::string>{"shell", "solid"}));
+  const physics::World world = build_world(scene);
+  EXPECT_NEAR(world.bodies()[1].inertia_local(0, 0) / world.bodies()[0].inertia_local(0, 0), 5.0 / 3, 1e-12);
+  EXPECT_EQ(world.bodies()[2].inertia_local(2, 2), 0.25);
+  const std::string number = error_of("[[body]]\nshape = \"sphere\"\ninertia = 3\n");
+  EXPECT_NE(number.find(":3: [[body]] 'body 1' field 'inertia': must be \"solid\", \"hollow\""), std::string::npos) << number;
+}
+
 TEST(SceneFile, SyntaxErrorNamesFileAndLine) {
   const std::string error = error_of("[world]\ngravity = [0, -9.81, 0]\nstep_rate = = 60\n");
   EXPECT_NE(error.find("SyntaxErrorNamesFileAndLine.toml:3:"), std::string::npos) << error;
