@@ -11,12 +11,16 @@ namespace impulse::demos {
 namespace {
 
 // A field naming a body: empty, or the name of one (checked here, at the field's own line).
+std::string no_such_body(const std::string& name, const Scene& scene) {
+  std::string known;
+  for (const physics::BodyDef& body : scene.bodies) known += (known.empty() ? "'" : ", '") + body.name + "'";
+  return "no body is named '" + name + "' (bodies: " + known + ")";
+}
+
 std::string body_name(TableReader& r, std::string_view key, const Scene& scene) {
   const std::string name = r.string(key, "");
   if (name.empty() || find_body(scene, name) >= 0) return name;
-  std::string known;
-  for (const physics::BodyDef& body : scene.bodies) known += (known.empty() ? "'" : ", '") + body.name + "'";
-  r.fail(r.get(key), key, "no body is named '" + name + "' (bodies: " + known + ")");
+  r.fail(r.get(key), key, no_such_body(name, scene));
 }
 
 CameraSetting read_camera_fields(TableReader& r, CameraSetting camera) {
@@ -126,11 +130,7 @@ void read_overlay(TableReader& top, Scene& scene) {
     o.plot_bodies.clear();
     for (const toml::node& item : *node->as_array()) {
       const auto name = item.value_exact<std::string>();
-      if (!name || find_body(scene, *name) < 0) {
-        std::string known;
-        for (const physics::BodyDef& body : scene.bodies) known += (known.empty() ? "'" : ", '") + body.name + "'";
-        r.fail(node, "plot_body", name ? "no body is named '" + *name + "' (bodies: " + known + ")" : std::string(expected));
-      }
+      if (!name || find_body(scene, *name) < 0) r.fail(node, "plot_body", name ? no_such_body(*name, scene) : std::string(expected));
       o.plot_bodies.push_back(*name);
     }
     if (o.plot_bodies.empty()) r.fail(node, "plot_body", expected);
