@@ -14,10 +14,14 @@ Aabb body_aabb(const Body& body, Real margin) {
     const Real inf = std::numeric_limits<Real>::infinity();
     return {Vec3::Constant(-inf), Vec3::Constant(inf)};
   }
-  const Vec3 reach = (body.shape.type == ShapeType::box
-                          ? Vec3(body.orientation.toRotationMatrix().cwiseAbs() * body.shape.half_extents)
-                          : Vec3::Constant(body.shape.radius)) +
-                     Vec3::Constant(margin);
+  const Shape& s = body.shape;
+  Vec3 reach = Vec3::Constant(s.radius);
+  if (s.type == ShapeType::box) {
+    reach = body.orientation.toRotationMatrix().cwiseAbs() * s.half_extents;
+  } else if (s.type != ShapeType::sphere) {
+    for (int k = 0; k < 3; ++k) reach[k] = reach_along(s, body.orientation, Vec3::Unit(k));
+  }
+  reach += Vec3::Constant(margin);
   return {body.position - reach, body.position + reach};
 }
 

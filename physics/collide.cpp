@@ -34,12 +34,21 @@ int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vect
       switch (b.shape.type) {
         case sphere: return collide_spheres(a, ia, b, ib, margin, out);
         case box: return collide_sphere_box(a, ia, b, ib, margin, out);
+        case capsule: return collide_sphere_capsule(a, ia, b, ib, margin, out);
+        case cylinder: return collide_sphere_cylinder(a, ia, b, ib, margin, out);
         case plane: return collide_sphere_plane(a, ia, b, ib, margin, out);
       }
       break;
     case box:
       if (b.shape.type == box) return collide_boxes(a, ia, b, ib, margin, out, cache);
-      return collide_box_plane(a, ia, b, ib, margin, out);
+      if (b.shape.type == plane) return collide_box_plane(a, ia, b, ib, margin, out);
+      return collide_convex(a, ia, b, ib, margin, out);
+    case capsule:
+      if (b.shape.type == plane) return collide_capsule_plane(a, ia, b, ib, margin, out);
+      return collide_convex(a, ia, b, ib, margin, out);
+    case cylinder:
+      if (b.shape.type == plane) return collide_cylinder_plane(a, ia, b, ib, margin, out);
+      return collide_convex(a, ia, b, ib, margin, out);
     case plane:
       break;  // planes are static: two never meet
   }

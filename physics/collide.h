@@ -21,7 +21,7 @@ struct SatCache {
 
 // Appends to `out` the contacts between bodies a and b (indices ia, ib) whose separation is below
 // `margin` (a positive margin yields speculative contacts). The appended contacts may have A and B
-// swapped so that A is the first shape in the order sphere, box, plane. Returns how many it added.
+// swapped so that A is the first shape in ShapeType's order. Returns how many it added.
 // Feature ids are laid out in manifold.h. `cache`, if given, is the pair's SatCache, read and
 // updated (box pairs use it).
 int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out,
@@ -34,5 +34,11 @@ int collide_sphere_plane(const Body& a, int ia, const Body& b, int ib, Real marg
 int collide_boxes(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out,
                   SatCache* cache = nullptr);
 int collide_box_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
+int collide_sphere_capsule(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
+int collide_sphere_cylinder(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
+int collide_capsule_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
+int collide_cylinder_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
+// A box, capsule or cylinder against a capsule or cylinder: GJK and EPA, then clipping (collide_convex.cpp).
+int collide_convex(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
 
 }  // namespace impulse::physics

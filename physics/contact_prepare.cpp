@@ -291,9 +291,9 @@ void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& bl
     if (k > 0) block.rolling_radius[l] = settings_.rolling_resistance / k;
   }
   block.twist_radius[l] = twist_radius;
-  // A sphere's surface stays where it is as it turns, and a still body does not turn.
-  m.turns_a = sa.inv_mass > 0 && m.radius_a == 0;
-  m.turns_b = sb.inv_mass > 0 && m.radius_b == 0;
+  // A sphere's surface stays where it is as it turns, a round side nearly so (manifold.h), and a still body does not turn.
+  m.turns_a = sa.inv_mass > 0 && m.radius_a == 0 && !feature::round_of(first.feature, 0);
+  m.turns_b = sb.inv_mass > 0 && m.radius_b == 0 && !feature::round_of(first.feature, 1);
   block.turns_a[l] = m.turns_a;
   block.turns_b[l] = m.turns_b;
   // A face's normal turns with its box: an incident corner is measured from the face as it is now.

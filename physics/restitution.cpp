@@ -76,11 +76,13 @@ ImpactGeometry impact_geometry(const ManifoldConstraint& m, const ContactConstra
   ImpactGeometry g;
   g.count = m.count;
   g.normal = m.normal;
+  // A round side's point stays put as its body turns (turns_a false), but its inertia turns.
+  const bool inertia_turns_a = sa.inv_mass > 0 && m.radius_a == 0, inertia_turns_b = sb.inv_mass > 0 && m.radius_b == 0;
   Quat dq_a = sa.dq, dq_b = sb.dq;
-  if (m.turns_a) turn(dq_a, sa.w, tau);
-  if (m.turns_b) turn(dq_b, sb.w, tau);
-  g.inv_inertia_a = m.turns_a ? turned_inverse_inertia(ia.inv_inertia, dq_a) : ia.inv_inertia;
-  g.inv_inertia_b = m.turns_b ? turned_inverse_inertia(ib.inv_inertia, dq_b) : ib.inv_inertia;
+  if (inertia_turns_a) turn(dq_a, sa.w, tau);
+  if (inertia_turns_b) turn(dq_b, sb.w, tau);
+  g.inv_inertia_a = inertia_turns_a ? turned_inverse_inertia(ia.inv_inertia, dq_a) : ia.inv_inertia;
+  g.inv_inertia_b = inertia_turns_b ? turned_inverse_inertia(ib.inv_inertia, dq_b) : ib.inv_inertia;
   g.moved_a = sa.dp + sa.v * tau;
   const Vec3 d = centres_apart(points[0], sa, sb, tau);
   if (m.radius_a > 0 && m.radius_b > 0) {  // two spheres: on the line of centres

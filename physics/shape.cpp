@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -14,10 +15,36 @@ Real shape_volume(const Shape& shape) {
     // FMA), and the physics must give the same bits on every x86-64 machine.
     case ShapeType::sphere: return Real(4) / 3 * std::numbers::pi * (shape.radius * shape.radius * shape.radius);
     case ShapeType::box: return 8 * shape.half_extents.prod();
+    case ShapeType::capsule:
+      return std::numbers::pi * shape.radius * shape.radius * (2 * shape.half_height + Real(4) / 3 * shape.radius);
+    case ShapeType::cylinder: return std::numbers::pi * shape.radius * shape.radius * (2 * shape.half_height);
     case ShapeType::plane: return 0;
   }
   return 0;
 }
+
+namespace {
+
+// Moments about the axis (y) and across it (x, z) of mass `axial` and `across`, as a diagonal.
+Mat3 about_y(Real axial, Real across) { return Vec3(across, axial, across).asDiagonal(); }
+
+// A capsule per unit mass: the cylinder between the caps (mass m_c = pi r^2 2h) and the two
+// half-balls together (m_s = 4/3 pi r^3), each cap's inertia moved to the centre by parallel axes
+// (its centre of mass c from its flat face, at h + c from the capsule's centre):
+//   solid (c = 3r/8):  I_y = m_c r^2/2 + m_s 2r^2/5,  I_x = m_c (r^2/4 + h^2/3) + m_s (2r^2/5 + h^2 + 3hr/4)
+//   shell (c = r/2, areas for masses: a_c = 2 pi r 2h, a_s = 4 pi r^2):
+//                      I_y = a_c r^2 + a_s 2r^2/3,    I_x = a_c (r^2/2 + h^2/3) + a_s (2r^2/3 + h^2 + hr)
+Mat3 capsule_unit_inertia(Real r, Real h, bool shell) {
+  const Real r2 = r * r, h2 = h * h;
+  const Real side = shell ? 2 * std::numbers::pi * r * 2 * h : std::numbers::pi * r2 * 2 * h;
+  const Real caps = shell ? 4 * std::numbers::pi * r2 : Real(4) / 3 * std::numbers::pi * r2 * r;
+  const Real axial = shell ? side * r2 + caps * (Real(2) / 3 * r2) : side * r2 / 2 + caps * (Real(2) / 5 * r2);
+  const Real across = shell ? side * (r2 / 2 + h2 / 3) + caps * (Real(2) / 3 * r2 + h2 + h * r)
+                            : side * (r2 / 4 + h2 / 3) + caps * (Real(2) / 5 * r2 + h2 + Real(3) / 4 * h * r);
+  return about_y(axial, across) / (side + caps);
+}
+
+}  // namespace
 
 Mat3 shape_unit_inertia(const Shape& shape) {
   switch (shape.type) {
@@ -25,6 +52,11 @@ Mat3 shape_unit_inertia(const Shape& shape) {
     case ShapeType::box: {
       const Vec3 e2 = (2 * shape.half_extents).cwiseAbs2();
       return Vec3(e2.y() + e2.z(), e2.x() + e2.z(), e2.x() + e2.y()).asDiagonal() * (Real(1) / 12);
+    }
+    case ShapeType::capsule: return capsule_unit_inertia(shape.radius, shape.half_height, false);
+    case ShapeType::cylinder: {  // r^2/2 about the axis, (3 r^2 + (2h)^2) / 12 across it
+      const Real r2 = shape.radius * shape.radius, h2 = shape.half_height * shape.half_height;
+      return about_y(r2 / 2, r2 / 4 + h2 / 3);
     }
     case ShapeType::plane: return Mat3::Zero();
   }
@@ -52,15 +84,35 @@ Mat3 shape_unit_shell_inertia(const Shape& shape) {
         }
       return moments.asDiagonal();
     }
+    case ShapeType::capsule: return capsule_unit_inertia(shape.radius, shape.half_height, true);
+    case ShapeType::cylinder: {  // the side alone, a tube: r^2 about the axis, r^2/2 + (2h)^2/12 across it
+      const Real r2 = shape.radius * shape.radius, h2 = shape.half_height * shape.half_height;
+      return about_y(r2, r2 / 2 + h2 / 3);
+    }
     case ShapeType::plane: return Mat3::Zero();
   }
   return Mat3::Zero();
+}
+
+Real reach_along(const Shape& shape, const Quat& orientation, const Vec3& d) {
+  const Vec3 local = rotate(orientation.conjugate(), d);
+  const Real along = std::abs(local.y()), across = std::sqrt(std::max(Real(1) - along * along, Real(0)));
+  switch (shape.type) {
+    case ShapeType::sphere: return shape.radius;
+    case ShapeType::box: return local.cwiseAbs().dot(shape.half_extents);
+    case ShapeType::capsule: return shape.half_height * along + shape.radius;
+    case ShapeType::cylinder: return shape.half_height * along + shape.radius * across;
+    case ShapeType::plane: return 0;
+  }
+  return 0;
 }
 
 Real bounding_radius(const Shape& shape) {
   switch (shape.type) {
     case ShapeType::sphere: return shape.radius;
     case ShapeType::box: return shape.half_extents.norm();
+    case ShapeType::capsule: return shape.half_height + shape.radius;
+    case ShapeType::cylinder: return std::sqrt(shape.radius * shape.radius + shape.half_height * shape.half_height);
     case ShapeType::plane: return 0;
   }
   return 0;
@@ -70,6 +122,8 @@ Real thinnest_half_size(const Shape& shape) {
   switch (shape.type) {
     case ShapeType::sphere: return shape.radius;
     case ShapeType::box: return shape.half_extents.minCoeff();
+    case ShapeType::capsule: return shape.radius;
+    case ShapeType::cylinder: return std::min(shape.radius, shape.half_height);
     case ShapeType::plane: return std::numeric_limits<Real>::infinity();
   }
   return 0;
@@ -84,6 +138,12 @@ std::string shape_problem(const Shape& shape) {
     case ShapeType::box:
       if (!(shape.half_extents.minCoeff() > 0) || !is_finite(shape.half_extents))
         return "half_extents must all be finite and > 0";
+      return {};
+    case ShapeType::capsule:
+    case ShapeType::cylinder:
+      if (!(shape.radius > 0) || !std::isfinite(shape.radius)) return "radius must be a finite number > 0, got " + num(shape.radius);
+      if (!(shape.half_height > 0) || !std::isfinite(shape.half_height))
+        return "height must be a finite number > 0, got " + num(2 * shape.half_height);
       return {};
     case ShapeType::plane:
       if (!is_finite(shape.normal) || shape.normal.norm() < Real(1e-9)) return "normal must be a non-zero finite vector";

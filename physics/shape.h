@@ -6,19 +6,26 @@
 
 namespace impulse::physics {
 
-enum class ShapeType { sphere, box, plane };
+// The order is collide()'s: a pair is dispatched with A the earlier type.
+enum class ShapeType { sphere, box, capsule, cylinder, plane };
 
 // A shape in its body's local frame. A plane is static only: the points x with
-// dot(normal, x) = offset, solid below (the side opposite the normal).
+// dot(normal, x) = offset, solid below (the side opposite the normal). A capsule is the points
+// within `radius` of the segment from -half_height to +half_height along the body's y (Bullet's,
+// Jolt's and MuJoCo's: `height`, the segment's length, leaves out the caps); a cylinder has its
+// axis along y and its flat faces at y = +-half_height.
 struct Shape {
   ShapeType type = ShapeType::sphere;
-  Real radius = 0.5;                   // sphere
+  Real radius = 0.5;                   // sphere, capsule, cylinder
+  Real half_height = 0.5;              // capsule, cylinder
   Vec3 half_extents{0.5, 0.5, 0.5};    // box
   Vec3 normal{0, 1, 0};                // plane, world space
   Real offset = 0;                     // plane
 
   static Shape sphere(Real r) { Shape s; s.type = ShapeType::sphere; s.radius = r; return s; }
   static Shape box(const Vec3& h) { Shape s; s.type = ShapeType::box; s.half_extents = h; return s; }
+  static Shape capsule(Real r, Real half) { Shape s; s.type = ShapeType::capsule; s.radius = r; s.half_height = half; return s; }
+  static Shape cylinder(Real r, Real half) { Shape s; s.type = ShapeType::cylinder; s.radius = r; s.half_height = half; return s; }
   static Shape plane(const Vec3& n, Real d) { Shape s; s.type = ShapeType::plane; s.normal = n; s.offset = d; return s; }
 };
 
@@ -32,12 +39,17 @@ inline Vec3 box_corner(const Vec3& half, int index) {
 Real shape_volume(const Shape& shape);
 Mat3 shape_unit_inertia(const Shape& shape);  // multiply by mass
 // The same for a thin shell, the mass on the surface: a sphere's 2/3 R^2 (5/3 of the solid's); a
-// box's six faces, each a thin plate with its share of the area.
+// box's six faces, each a thin plate with its share of the area; a cylinder's curved side alone (a
+// ring or tube: m R^2 about its axis); a capsule's side and caps.
 Mat3 shape_unit_shell_inertia(const Shape& shape);
 
-// Distance from the centre to the farthest point of a sphere or a box (0 for a plane).
+// How far the shape, turned by `orientation`, reaches from its centre along the unit direction `d`:
+// its support distance (a plane: 0).
+Real reach_along(const Shape& shape, const Quat& orientation, const Vec3& d);
+// Distance from the centre to the farthest point of the shape (0 for a plane).
 Real bounding_radius(const Shape& shape);
-// Half the shape's thinnest size: a sphere's radius, a box's smallest half extent (a plane: infinite).
+// Half the shape's thinnest size: a sphere's or capsule's radius, a box's smallest half extent, the
+// smaller of a cylinder's radius and half height (a plane: infinite).
 Real thinnest_half_size(const Shape& shape);
 
 // Why a shape is impossible ("radius must be > 0, got -1"), or empty when it is fine.

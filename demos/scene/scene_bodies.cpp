@@ -33,9 +33,15 @@ void read_body(const TableReader& top, const toml::table& table, int index, Scen
   if (auto name = table.get_as<std::string>("name")) def.name = name->get();
   TableReader r = top.child(table, "[[body]] '" + def.name + "'");
   r.get("name");
-  const std::string shape = r.choice("shape", "", {"sphere", "box", "plane"});
+  const std::string shape = r.choice("shape", "", {"sphere", "box", "capsule", "cylinder", "plane"});
   if (shape == "sphere") {
     def.shape = physics::Shape::sphere(r.number("radius", 0.5, 0, kLargestSize, true));
+  } else if (shape == "capsule" || shape == "cylinder") {
+    // Along the body's y: a cylinder's height, a capsule's between its two balls' centres (its
+    // whole length is height + 2 radius).
+    const Real radius = r.number("radius", 0.5, 0, kLargestSize, true);
+    const Real height = r.number("height", 1, 0, kLargestSize, true);
+    def.shape = shape == "capsule" ? physics::Shape::capsule(radius, height / 2) : physics::Shape::cylinder(radius, height / 2);
   } else if (shape == "box") {
     const Vec3 size = r.vec3("size", Vec3(1, 1, 1), kLargestSize, "m", "a lecture's bodies are smaller");
     if (!(size.minCoeff() > 0)) r.fail(r.get("size"), "size", "every edge must be > 0 (metres: [x, y, z])");

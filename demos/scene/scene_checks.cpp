@@ -25,13 +25,10 @@ double energy(const physics::World& world) {
   return record.kinetic_energy + record.potential_energy;
 }
 
-// The body's lowest point above y = 0: its centre less its radius, or less its half height.
+// The body's lowest point above y = 0: its centre less its reach downwards.
 double bottom(const physics::Body& body) {
-  const physics::Shape& shape = body.shape;
-  const double below = shape.type == physics::ShapeType::sphere ? shape.radius
-                       : shape.type == physics::ShapeType::box  ? shape.half_extents.y()
-                                                                : 0.0;
-  return body.position.y() - below;
+  if (body.shape.type == physics::ShapeType::plane) return body.position.y();
+  return body.position.y() - physics::reach_along(body.shape, body.orientation, -physics::Vec3::UnitY());
 }
 
 }  // namespace
