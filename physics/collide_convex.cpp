@@ -1,8 +1,9 @@
 // Narrow phase of the convex pairs without a formula of their own (a capsule or a cylinder against a
 // box, a capsule or a cylinder): the normal and depth by GJK and EPA (libccd), then the points by
 // clipping, as Jolt's and Box3D's manifolds are built:
-//   1. GJK/EPA on both shapes grown by half the margin: they overlap exactly where the surfaces are
-//      closer than the margin, the depth less the margin is the separation, EPA's direction the normal.
+//   1. GJK on both shapes grown by half the margin: they overlap exactly where the surfaces are
+//      closer than the margin. The normal: of EPA's direction, MPR's and the faces' normals, the
+//      one along which the shapes are farthest apart (the separating axes' rule).
 //   2. Each shape's feature facing the other (supporting_feature): a face (a box's, a cylinder's
 //      flat face as an octagon of rim points), a line (a capsule's side: its ends' balls; a
 //      cylinder's side: the two rims' lowest points) or a point.
@@ -227,20 +228,51 @@ int collide_convex(const Body& a, int ia, const Body& b, int ib, Real margin, st
   ccd.center2 = ccd_centre;
   ccd.max_iterations = 100;
   ccd.epa_tolerance = 1e-7;
+  // The separation along a candidate normal n (A leaving B along it): A's nearest reach along -n
+  // less B's farthest along n; the true separation is the largest over every n. EPA's and MPR's
+  // directions are candidates (libccd's EPA now and then answers nonsense near a touching flat
+  // face), and so are the faces' normals, which win where a face rests on the other.
+  auto separation_along = [&](const Vec3& n) {
+    return (a.position + rotation_a * local_support(a.shape, rotation_a.transpose() * -n)).dot(n) -
+           (b.position + rotation_b * local_support(b.shape, rotation_b.transpose() * n)).dot(n);
+  };
+  Vec3 normal = Vec3::Zero();
+  Real separation = -INFINITY;
+  Vec3 epa_point = Vec3::Zero();
+  auto consider = [&](const Vec3& n) {
+    if (!(n.squaredNorm() > Real(0.5)) || !n.allFinite()) return;
+    const Real s = separation_along(n);
+    if (s > separation) separation = s, normal = n;
+  };
   ccd_real_t depth;
   ccd_vec3_t direction, position;
-  if (ccdGJKPenetration(&pa, &pb, &ccd, &depth, &direction, &position) != 0) return 0;
   // libccd moves B by depth along `direction` to part them: A leaves B the other way.
-  Vec3 normal = -Vec3(ccdVec3X(&direction), ccdVec3Y(&direction), ccdVec3Z(&direction));
-  if (!(normal.squaredNorm() > Real(0.5))) return 0;
-  const Real epa_separation = margin - depth;
-  const Vec3 epa_point(ccdVec3X(&position), ccdVec3Y(&position), ccdVec3Z(&position));
+  if (ccdGJKPenetration(&pa, &pb, &ccd, &depth, &direction, &position) == 0) {
+    consider(-Vec3(ccdVec3X(&direction), ccdVec3Y(&direction), ccdVec3Z(&direction)));
+    epa_point = Vec3(ccdVec3X(&position), ccdVec3Y(&position), ccdVec3Z(&position));
+  } else {
+    return 0;  // apart by more than the margin
+  }
+  if (ccdMPRPenetration(&pa, &pb, &ccd, &depth, &direction, &position) == 0) {
+    const Vec3 before = normal;
+    consider(-Vec3(ccdVec3X(&direction), ccdVec3Y(&direction), ccdVec3Z(&direction)));
+    if (normal != before) epa_point = Vec3(ccdVec3X(&position), ccdVec3Y(&position), ccdVec3Z(&position));
+  }
+  for (int side = 0; side < 2; ++side) {  // the faces' normals: a box's three axes, a cylinder's
+    const Body& body = side == 0 ? a : b;
+    const Mat3& rotation = side == 0 ? rotation_a : rotation_b;
+    if (body.shape.type == ShapeType::box)
+      for (int k = 0; k < 3; ++k) consider(rotation.col(k)), consider(-rotation.col(k));
+    if (body.shape.type == ShapeType::cylinder) consider(rotation.col(1)), consider(-rotation.col(1));
+  }
+  if (separation > margin) return 0;
+  const Real epa_separation = separation;
 
   const Feature fa = supporting_feature(a, rotation_a, -normal), fb = supporting_feature(b, rotation_b, normal);
   const size_t first = out.size();
   auto add = [&](const Vec3& on_a, const Vec3& on_b, const Vec3& n, uint32_t id) {
-    const Real separation = n.dot(on_a - on_b);
-    if (separation <= margin) out.push_back({ia, ib, (on_a + on_b) / 2, n, separation, id});
+    const Real gap = n.dot(on_a - on_b);
+    if (gap <= margin) out.push_back({ia, ib, (on_a + on_b) / 2, n, gap, id});
   };
   // The reference face: A's or B's, the one whose normal is nearer the pair's.
   const Real align_a = fa.face ? -fa.face_normal.dot(normal) : -1, align_b = fb.face ? fb.face_normal.dot(normal) : -1;
