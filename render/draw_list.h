@@ -29,6 +29,16 @@ struct BoxItem {
   Colour colour;
   bool sleeping = false;
 };
+// A solid circular cylinder: its axis along its local y, its flat faces at y = +-half_height. (A
+// capsule is drawn as one with a sphere at each end.)
+struct CylinderItem {
+  Vec3f centre;
+  float radius = 0.5f;
+  float half_height = 0.5f;
+  Quatf orientation = Quatf::Identity();
+  Colour colour;
+  bool sleeping = false;
+};
 // An arrow from `origin` along `direction` (its length is the arrow's length in metres).
 // Arrows and points are drawn in flat colours, and faintly where a body hides them. Where arrows
 // overlap (e.g. a velocity and an impulse along one line), the higher `layer` is drawn on top.
@@ -56,6 +66,7 @@ struct DrawList {
   float ground_height = 0.0f;
   std::vector<SphereItem> spheres;
   std::vector<BoxItem> boxes;
+  std::vector<CylinderItem> cylinders;
   std::vector<ArrowItem> arrows;
   std::vector<PointItem> points;
   std::vector<LineItem> lines;

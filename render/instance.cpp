@@ -37,6 +37,11 @@ Instance box_instance(const BoxItem& box) {
                        edges | (box.sleeping ? sleeping : plain));
 }
 
+Instance cylinder_instance(const CylinderItem& cylinder) {
+  const Vec3f scale(cylinder.radius, cylinder.half_height, cylinder.radius);
+  return make_instance(cylinder.centre, cylinder.orientation, scale, cylinder.colour, cylinder.sleeping ? sleeping : plain);
+}
+
 Instance point_instance(const Vec3f& position, float radius, const Colour& colour) {
   return make_instance(position, Quatf::Identity(), Vec3f::Constant(radius), colour, plain);
 }

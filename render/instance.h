@@ -1,5 +1,6 @@
 // Per-instance data the mesh programs read (vertex attributes 2..10, see shaders.h), and how
-// spheres, boxes and points become instances of the unit meshes in mesh.h (or impostor quads).
+// spheres, boxes, cylinders and points become instances of the unit meshes in mesh.h (or impostor
+// quads).
 #pragma once
 #include <vector>
 
@@ -20,6 +21,9 @@ static_assert(sizeof(Instance) == 29 * sizeof(float), "Instance must stay tightl
 
 Instance sphere_instance(const SphereItem& sphere);  // of make_icosphere, or an impostor quad
 Instance box_instance(const BoxItem& box);           // of make_cube
+// Of make_cylinder. Plain: the `edges` style darkens by unit-cube coordinates, which on the curved
+// side would draw lines where x or z is +-1.
+Instance cylinder_instance(const CylinderItem& cylinder);
 Instance point_instance(const Vec3f& position, float radius, const Colour& colour);  // a plain sphere
 
 }  // namespace impulse::render

@@ -1,8 +1,10 @@
 #include "render/mesh.h"
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <utility>
 
 namespace impulse::render {
@@ -74,6 +76,39 @@ MeshData make_cube() {
       add_vertex(mesh, normal - u + v, normal);
       add_triangle(mesh, first, first + 1, first + 2);
       add_triangle(mesh, first, first + 2, first + 3);
+    }
+  }
+  return mesh;
+}
+
+MeshData make_cylinder(int segments) {
+  segments = std::max(segments, 3);
+  MeshData mesh;
+  std::vector<Vec3> rim;  // at y = 0, counter-clockwise seen from +y
+  for (int i = 0; i < segments; ++i) {
+    const float angle = 2.0f * std::numbers::pi_v<float> * float(i) / float(segments);
+    rim.emplace_back(std::cos(angle), 0.0f, -std::sin(angle));
+  }
+  // The side: a bottom and a top vertex at each rim point, normal straight out; the seam shares them.
+  for (const Vec3& p : rim) {
+    add_vertex(mesh, p - Vec3::UnitY(), p);
+    add_vertex(mesh, p + Vec3::UnitY(), p);
+  }
+  const auto n = static_cast<uint32_t>(segments);
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t bottom = 2 * i, top = 2 * i + 1, next_bottom = 2 * ((i + 1) % n), next_top = next_bottom + 1;
+    add_triangle(mesh, bottom, next_bottom, next_top);
+    add_triangle(mesh, bottom, next_top, top);
+  }
+  // The caps: fans about their centres, with their own vertices for the flat normals.
+  for (const float y : {-1.0f, 1.0f}) {
+    const Vec3 normal(0.0f, y, 0.0f);
+    const uint32_t centre = add_vertex(mesh, normal, normal);
+    for (const Vec3& p : rim) add_vertex(mesh, p + normal, normal);
+    for (uint32_t i = 0; i < n; ++i) {
+      const uint32_t a = centre + 1 + i, b = centre + 1 + (i + 1) % n;
+      if (y > 0) add_triangle(mesh, centre, a, b);
+      else add_triangle(mesh, centre, b, a);
     }
   }
   return mesh;

@@ -18,6 +18,9 @@ struct MeshData {
 
 MeshData make_icosphere(int subdivisions);  // radius 1, smooth normals; 20 * 4^subdivisions triangles
 MeshData make_cube();                       // [-1, 1]^3, flat normals
+// Radius 1 about the y axis, y in [-1, 1]: `segments` (>= 3) flat sides with smooth normals and two
+// flat caps, 4 * segments triangles.
+MeshData make_cylinder(int segments);
 MeshData make_quad();                       // [-1, 1]^2 in x, z at y = 0, facing +y
 
 }  // namespace impulse::render

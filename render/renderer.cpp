@@ -31,6 +31,11 @@ constexpr float kOutlineTolerancePixels = 0.25f;  // how far a tessellated outli
 constexpr float kArrowGhostAlpha = 0.55f;  // the parts of arrows hidden behind bodies, drawn flat
 const Vec3f kGroundColour(0.84f, 0.85f, 0.86f);
 
+// Which mesh the lit program draws (u_mesh) and which caster the ground shadow's (u_caster), as
+// shaders.cpp numbers them: each has its own outlines.
+enum class LitMesh { box = 0, sphere = 1, cylinder = 2 };
+enum class ShadowCaster { box = 0, disc = 1, cylinder = 2 };
+
 Vec3f to_vector(const Colour& colour) { return {colour.r, colour.g, colour.b}; }
 
 // GL records errors instead of failing calls; one check per frame catches e.g. out-of-memory.
@@ -104,6 +109,7 @@ struct Renderer::Gpu {
   ShaderProgram flat{"flat", shaders::flat_vertex(), shaders::flat_fragment(edges_on)};
   FlatMesh arrow_mesh;
   GpuMesh cube_mesh{make_cube()};
+  GpuMesh cylinder_mesh{make_cylinder(kCylinderSegments)};
   GpuMesh shadow_discs{make_quad()};  // each around a sphere's great disc (ground_shadow.h)
   GpuMesh sphere_quads{make_quad()};
   GpuMesh point_quads{make_quad()};
@@ -118,7 +124,7 @@ struct Renderer::Gpu {
 
   // Scratch, kept to reuse their memory from frame to frame.
   std::array<std::vector<Instance>, kMaxSphereLevel + 1> spheres_by_level;
-  std::vector<Instance> spheres, boxes, points, discs;
+  std::vector<Instance> spheres, boxes, cylinders, points, discs;
   std::vector<FlatVertex> arrows;
 
   Gpu(int width, int height, const RendererSettings& renderer_settings)
@@ -162,6 +168,7 @@ void Renderer::Gpu::collect(const DrawList& draw_list, const CameraView& camera,
   for (auto& list : spheres_by_level) list.clear();
   spheres.clear();
   boxes.clear();
+  cylinders.clear();
   points.clear();
   arrows.clear();
   discs.clear();
@@ -176,6 +183,7 @@ void Renderer::Gpu::collect(const DrawList& draw_list, const CameraView& camera,
     }
   }
   for (const BoxItem& box : draw_list.boxes) boxes.push_back(box_instance(box));
+  for (const CylinderItem& cylinder : draw_list.cylinders) cylinders.push_back(cylinder_instance(cylinder));
   for (const LineItem& line : draw_list.lines) append_flat_line(line, camera, arrows);
   for (const ArrowItem& arrow : draw_list.arrows) append_flat_arrow(arrow, camera, arrows);
   for (const PointItem& point : draw_list.points) {
@@ -187,12 +195,13 @@ void Renderer::Gpu::collect(const DrawList& draw_list, const CameraView& camera,
   sphere_quads.upload(spheres);
   for (int level = 0; level <= kMaxSphereLevel; ++level) sphere_levels[level].upload(spheres_by_level[level]);
   cube_mesh.upload(boxes);
+  cylinder_mesh.upload(cylinders);
   arrow_mesh.upload(arrows);
   point_quads.upload(points);
   shadow_discs.upload(discs);
 }
 
-// Depth of spheres (always ray-cast: exact and cheap) and boxes as the light sees them.
+// Depth of spheres (always ray-cast: exact and cheap), boxes and cylinders as the light sees them.
 void Renderer::Gpu::draw_shadows(const ShadowFrustum& shadow, const Vec3f& towards_light) {
   shadow_map->bind_for_drawing();
   glDisable(GL_CULL_FACE);
@@ -201,6 +210,7 @@ void Renderer::Gpu::draw_shadows(const ShadowFrustum& shadow, const Vec3f& towar
   depth_only.use();
   depth_only.set("u_view_projection", shadow.view_projection);
   cube_mesh.draw();
+  cylinder_mesh.draw();
   glDisable(GL_POLYGON_OFFSET_FILL);
   impostor_shadow.use();
   impostor_shadow.set("u_view_projection", shadow.view_projection);
@@ -214,10 +224,12 @@ void Renderer::Gpu::draw_bodies() {
   lit.use();
   lit.set("u_alpha", 1.0f);
   lit.set("u_ambient_lift", 0.0f);
-  lit.set("u_sphere_mesh", 0);
+  lit.set("u_mesh", int(LitMesh::box));
   cube_mesh.draw();
+  lit.set("u_mesh", int(LitMesh::cylinder));
+  cylinder_mesh.draw();
   if (settings.spheres == SphereMethod::tessellated) {
-    lit.set("u_sphere_mesh", 1);
+    lit.set("u_mesh", int(LitMesh::sphere));
     for (const GpuMesh& level : sphere_levels) level.draw();
   } else {
     glDisable(GL_CULL_FACE);
@@ -304,10 +316,12 @@ void Renderer::Gpu::draw_ground_shadows(const DrawList& draw_list) {
   glDepthMask(GL_FALSE);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(-1.0f, -4.0f);
-  ground_shadow.set("u_disc", 1);
+  ground_shadow.set("u_caster", int(ShadowCaster::disc));
   shadow_discs.draw();
-  ground_shadow.set("u_disc", 0);
+  ground_shadow.set("u_caster", int(ShadowCaster::box));
   cube_mesh.draw();
+  ground_shadow.set("u_caster", int(ShadowCaster::cylinder));
+  cylinder_mesh.draw();
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDepthMask(GL_TRUE);
 }

@@ -139,6 +139,24 @@ vec4 with_box_face_edges(vec4 edges, vec3 local, vec3 local_normal) {
     if (abs(local_normal[axis]) < 0.5) edges = with_edge(with_edge(edges, 1.0 - local[axis]), 1.0 + local[axis]);
   return edges;
 }
+// How far inside its outline a ray from `origin` along `direction` passes the infinite cylinder of
+// `radius` about the line through `centre` along unit `axis`: the sphere's discriminant, across the
+// axis (along^2 - distance^2 + radius^2; 0 on the outline, about linear across it).
+float cylinder_inside(vec3 origin, vec3 direction, vec3 centre, vec3 axis, float radius) {
+  vec3 to_centre = centre - origin;
+  vec3 across = to_centre - axis * dot(to_centre, axis);
+  vec3 ray = direction - axis * dot(direction, axis);
+  float along = dot(across, ray) * inversesqrt(max(dot(ray, ray), 1e-12));
+  return along * along - dot(across, across) + radius * radius;
+}
+// A face of make_cylinder (unit coordinates `local`, normal `local_normal`): a cap's rim, or the
+// side's rims and its outline (`side_inside`, cylinder_inside). Both are worked out and one is
+// chosen, so the derivatives are taken in step.
+vec4 with_cylinder_edges(vec4 edges, vec3 local, vec3 local_normal, float side_inside) {
+  vec4 cap = with_edge(edges, 1.0 - dot(local.xz, local.xz));
+  vec4 side = with_edge(with_edge(with_edge(edges, side_inside), 1.0 - local.y), 1.0 + local.y);
+  return abs(local_normal.y) > 0.5 ? cap : side;
+}
 )";
 
 std::string defines(bool shadow_map, bool edges) {
@@ -162,13 +180,15 @@ out vec3 v_world;
 out vec3 v_normal;
 out vec3 v_local;
 out vec3 v_local_normal;
-flat out vec4 v_sphere;  // centre and radius, for an icosphere
+flat out vec4 v_sphere;  // centre and radius, for an icosphere or a cylinder
+flat out vec3 v_axis;    // a cylinder's, unit
 flat out vec3 v_colour;
 flat out int v_style;
 
 void main() {
   vec4 world = in_model * vec4(in_position, 1.0);
   v_sphere = vec4(in_model[3].xyz, length(in_model[0].xyz));
+  v_axis = normalize(in_model[1].xyz);
   v_world = world.xyz;
   v_normal = in_normal_matrix * in_normal;
   v_local = in_position;
@@ -187,20 +207,36 @@ in vec3 v_normal;
 in vec3 v_local;
 in vec3 v_local_normal;
 flat in vec4 v_sphere;
+flat in vec3 v_axis;
 flat in vec3 v_colour;
 flat in int v_style;
 
-uniform int u_sphere_mesh;  // 1: icospheres, whose outline is the true sphere's (as an impostor's)
+// The mesh drawn, for its outlines: boxes (their faces' sides), icospheres and cylinders (the true
+// sphere's or side's outline, as an impostor's, and a cylinder's rims).
+const int kBoxMesh = 0;
+const int kSphereMesh = 1;
+const int kCylinderMesh = 2;
+uniform int u_mesh;
 
 out vec4 out_colour;
 
 void main() {
   vec3 normal = normalize(v_normal);
   if (!gl_FrontFacing) normal = -normal;
-  vec3 eye_to_centre = v_sphere.xyz - u_camera_position;
-  float along = dot(eye_to_centre, normalize(v_world - u_camera_position));
-  float inside = along * along - dot(eye_to_centre, eye_to_centre) + v_sphere.w * v_sphere.w;  // the ray meets it
-  write_edges(u_sphere_mesh != 0 ? with_edge(kNoEdges, inside) : with_box_face_edges(kNoEdges, v_local, v_local_normal));
+  vec3 ray = normalize(v_world - u_camera_position);
+  vec4 edges;
+  if (u_mesh == kSphereMesh) {  // a uniform: the derivatives stay in step
+    vec3 eye_to_centre = v_sphere.xyz - u_camera_position;
+    float along = dot(eye_to_centre, ray);
+    float inside = along * along - dot(eye_to_centre, eye_to_centre) + v_sphere.w * v_sphere.w;  // the ray meets it
+    edges = with_edge(kNoEdges, inside);
+  } else if (u_mesh == kCylinderMesh) {
+    float inside = cylinder_inside(u_camera_position, ray, v_sphere.xyz, v_axis, v_sphere.w);
+    edges = with_cylinder_edges(kNoEdges, v_local, v_local_normal, inside);
+  } else {  // kBoxMesh
+    edges = with_box_face_edges(kNoEdges, v_local, v_local_normal);
+  }
+  write_edges(edges);
   out_colour = surface_colour(v_colour, v_style, v_local, v_world, normal);
 }
 )";
@@ -385,18 +421,35 @@ float grid_line(vec2 coord, float spacing) {
 
 #ifdef IN_SHADOW
 in vec2 v_disc;
-in vec3 v_local;         // a box's shadow: the unit cube's coordinates and face normal
+in vec3 v_local;         // a box's or cylinder's shadow: the unit mesh's coordinates and face normal
 in vec3 v_local_normal;
-uniform int u_disc;                 // 1: keep the samples inside the disc of the quad
+flat in vec3 v_centre;   // a cylinder's
+flat in vec3 v_axis;
+flat in float v_radius;
+const int kBoxCaster = 0;
+const int kDiscCaster = 1;      // keep the samples inside the disc of the quad
+const int kCylinderCaster = 2;
+uniform int u_caster;
 uniform vec2 u_sample_offsets[16];  // multisample positions relative to the pixel centre
 uniform int u_sample_count;
 #endif
 
 void main() {
 #ifdef IN_SHADOW
-  write_edges(u_disc != 0 ? with_edge(kNoEdges, 1.0 - dot(v_disc, v_disc)) : with_box_face_edges(kNoEdges, v_local, v_local_normal));
+  vec4 edges;
+  if (u_caster == kDiscCaster) {  // a uniform: the derivatives stay in step
+    edges = with_edge(kNoEdges, 1.0 - dot(v_disc, v_disc));
+  } else if (u_caster == kCylinderCaster) {
+    // The side's shadow ends where the line along which this point slid (ground_shadow_vertex)
+    // grazes the cylinder.
+    vec3 slide = vec3(u_light_direction.x, max(u_light_direction.y, 0.05), u_light_direction.z);
+    edges = with_cylinder_edges(kNoEdges, v_local, v_local_normal, cylinder_inside(v_world, slide, v_centre, v_axis, v_radius));
+  } else {  // kBoxCaster
+    edges = with_box_face_edges(kNoEdges, v_local, v_local_normal);
+  }
+  write_edges(edges);
   gl_SampleMask[0] = -1;  // every sample, unless the disc says otherwise (a shader that writes the mask must always)
-  if (u_disc != 0) {
+  if (u_caster == kDiscCaster) {
     // Per multisample, as the impostors: a quad is two large triangles, where a fan of thin ones
     // would cost llvmpipe far more.
     vec2 step_x = dFdx(v_disc), step_y = dFdy(v_disc);
@@ -439,7 +492,8 @@ void main() {
 }
 
 // Shadows cast on the ground by geometry: each vertex slides along the light onto the plane
-// y = u_ground_height (a sphere's great disc, as the quad around it, or a box's own vertices).
+// y = u_ground_height (a sphere's great disc, as the quad around it, or a box's or cylinder's own
+// vertices).
 std::string ground_shadow_vertex() {
   return std::string(kVersion) + R"(
 layout(location = 0) in vec3 in_position;
@@ -454,11 +508,17 @@ out vec3 v_world;
 out vec2 v_disc;  // a disc's quad: the disc is where |v_disc| <= 1 (projection keeps this linear)
 out vec3 v_local;
 out vec3 v_local_normal;
+flat out vec3 v_centre;  // a cylinder's centre, unit axis and radius
+flat out vec3 v_axis;
+flat out float v_radius;
 
 void main() {
   v_disc = in_position.xz;
   v_local = in_position;
   v_local_normal = in_normal;
+  v_centre = in_model[3].xyz;
+  v_axis = normalize(in_model[1].xyz);
+  v_radius = length(in_model[0].xyz);
   vec3 world = (in_model * vec4(in_position, 1.0)).xyz;
   world -= u_light_direction * (max(world.y - u_ground_height, 0.0) / max(u_light_direction.y, 0.05));
   world.y = u_ground_height;

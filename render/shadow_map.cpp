@@ -19,6 +19,11 @@ ShadowFrustum fit_shadow_frustum(const DrawList& draw_list, const Eigen::Vector3
     bounds.extend(box.centre - Vec3f::Constant(reach));
     bounds.extend(box.centre + Vec3f::Constant(reach));
   }
+  for (const CylinderItem& cylinder : draw_list.cylinders) {
+    const float reach = std::hypot(cylinder.radius, cylinder.half_height);  // to a rim
+    bounds.extend(cylinder.centre - Vec3f::Constant(reach));
+    bounds.extend(cylinder.centre + Vec3f::Constant(reach));
+  }
   ShadowFrustum frustum;
   if (bounds.isEmpty() || !bounds.sizes().allFinite()) return frustum;
 

@@ -47,8 +47,19 @@ void add_body_boxes(const std::vector<physics::Body>& bodies, const std::vector<
   for (size_t i = 0; i < bodies.size() && i < poses.size(); ++i) {
     const physics::Body& body = bodies[i];
     std::optional<render::ScreenBox> box;
-    if (body.shape.type == physics::ShapeType::sphere) box = sphere_box(poses[i].position, body.shape.radius, view);
-    else if (body.shape.type == physics::ShapeType::box) box = box_box(poses[i], body.shape.half_extents, view);
+    const physics::Shape& shape = body.shape;
+    switch (shape.type) {
+      case physics::ShapeType::sphere: box = sphere_box(poses[i].position, shape.radius, view); break;
+      case physics::ShapeType::box: box = box_box(poses[i], shape.half_extents, view); break;
+      // The box in the body's frame that holds it (its axis along y).
+      case physics::ShapeType::cylinder:
+        box = box_box(poses[i], physics::Vec3(shape.radius, shape.half_height, shape.radius), view);
+        break;
+      case physics::ShapeType::capsule:
+        box = box_box(poses[i], physics::Vec3(shape.radius, shape.half_height + shape.radius, shape.radius), view);
+        break;
+      case physics::ShapeType::plane: break;
+    }
     if (!box || !(box->right() > 0 && box->bottom() > 0 && box->x < float(view.width) && box->y < float(view.height))) continue;
     out.push_back({0, body.name, within_reach(*box, view), !body.is_static()});
   }

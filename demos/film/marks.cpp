@@ -45,6 +45,8 @@ double body_size(const physics::Shape& shape) {
   switch (shape.type) {
     case physics::ShapeType::sphere: return shape.radius;
     case physics::ShapeType::box: return shape.half_extents.minCoeff();
+    case physics::ShapeType::capsule: return shape.radius;
+    case physics::ShapeType::cylinder: return std::min(shape.radius, shape.half_height);
     case physics::ShapeType::plane: return INFINITY;
   }
   return INFINITY;

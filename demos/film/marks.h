@@ -29,8 +29,8 @@ struct ArrowScales {
   double normal_length = 0.6;  // m
 };
 
-// A body's size for its marks, m: a sphere's radius, a box's smallest half-size; a plane has none
-// (infinity).
+// A body's size for its marks, m: a sphere's or capsule's radius, a box's smallest half-size, the
+// smaller of a cylinder's radius and half height; a plane has none (infinity).
 double body_size(const physics::Shape& shape);
 
 // The scene's scales, or (for 0) a round number (1, 2 or 5 times a power of ten) that draws the

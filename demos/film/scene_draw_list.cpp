@@ -104,6 +104,22 @@ render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::
         list.boxes.push_back({to_float(pose.position), body.shape.half_extents.cast<float>(),
                               pose.orientation.cast<float>(), colour, sleeping});
         break;
+      case physics::ShapeType::cylinder:
+        list.cylinders.push_back({to_float(pose.position), float(body.shape.radius), float(body.shape.half_height),
+                                  pose.orientation.cast<float>(), colour, sleeping});
+        break;
+      case physics::ShapeType::capsule: {
+        // The cylinder of its segment and a ball at each end (plain: octant marks on the half
+        // that shows would read as a separate spinning ball).
+        const render::Quatf orientation = pose.orientation.cast<float>();
+        const render::Vec3f centre = to_float(pose.position);
+        const float radius = float(body.shape.radius), half_height = float(body.shape.half_height);
+        list.cylinders.push_back({centre, radius, half_height, orientation, colour, sleeping});
+        const render::Vec3f end = orientation * render::Vec3f(0.0f, half_height, 0.0f);
+        for (const float side : {1.0f, -1.0f})
+          list.spheres.push_back({centre + side * end, radius, orientation, colour, false, sleeping});
+        break;
+      }
       case physics::ShapeType::plane:
         // The renderer draws one ground; a horizontal plane becomes it.
         if (body.shape.normal.y() > 0.999) {

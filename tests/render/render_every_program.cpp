@@ -1,8 +1,8 @@
 // A child process for RenderChildren (render_child_test.cpp): draws with every shader program the
-// renderer has (lit bodies, sphere impostors and icospheres, flat arrows, points, ground, ground
-// shadows, the shadow map's depth passes), paints the overlay and encodes an MP4, under whatever
-// llvmpipe settings its environment holds. Exits 0 when every frame was drawn and encoded, 1 with
-// the reason on an error; a crash is the parent's to see.
+// renderer has (lit bodies, cylinders among them, sphere impostors and icospheres, flat arrows,
+// points, ground, ground shadows, the shadow map's depth passes), paints the overlay and encodes an
+// MP4, under whatever llvmpipe settings its environment holds. Exits 0 when every frame was drawn
+// and encoded, 1 with the reason on an error; a crash is the parent's to see.
 //
 //   render_every_program OUTPUT_DIRECTORY
 #include <cstdio>
@@ -54,6 +54,7 @@ void draw_and_encode(const Variant& variant, const std::filesystem::path& direct
   render::Frame frame;
   for (int i = 0; i < kFrames; ++i) {
     render::DrawList list = testing::bodies_scene();
+    list.cylinders.push_back({{-2.3f, 0.6f, -0.6f}, 0.3f, 0.6f, render::Quatf::Identity(), {0.4f, 0.6f, 0.3f}});
     list.camera.position.x() += 0.2f * static_cast<float>(i);
     renderer.draw_into(list, frame);
     painter.paint(testing::lecture_overlay(), frame);
