@@ -150,6 +150,69 @@ std::string planar_collisions(Draw& draw) {
   return scene.str();
 }
 
+// Section 5's shapes among the others: spheres, boxes, capsules and cylinders thrown at each other
+// in zero gravity (free-round-collisions), or dropped onto the ground (round-drops), spinning, any
+// material.
+void any_shape(Draw& draw, SceneText& scene, Placement& placement, bool free) {
+  const double restitution = draw.uniform(0, 1), friction = draw.uniform(0, 1), mass = draw.uniform(0.2, 5);
+  const int shape = draw.integer(0, 3);
+  const double radius = draw.uniform(0.08, 0.4), height = draw.uniform(0.05, 0.8);
+  const Vec3 size = draw.vector(0.1, 0.8);
+  const double reach = shape == 0 ? radius : shape == 1 ? size.norm() / 2 : shape == 2 ? height / 2 + radius : std::hypot(radius, height / 2);
+  const Vec3 at = placement.place(reach);
+  const Vec3 velocity = free ? toward_middle(draw, at) : vector_of_length(draw, 0, 3);
+  const Vec3 spin = vector_of_length(draw, 0, 6), turned = draw.vector(0, 90);
+  if (shape == 0) scene.sphere(at, radius, mass, velocity, restitution, friction, spin);
+  else if (shape == 1) scene.box(at, size, mass, velocity, spin, turned, restitution, friction);
+  else scene.round(shape == 2 ? "capsule" : "cylinder", at, radius, height, mass, velocity, spin, turned, restitution, friction);
+}
+
+std::string free_round_collisions(Draw& draw) {
+  SceneText scene("free collisions of every shape", 3.0);
+  scene.line("[world]\ngravity = [0, 0, 0]");
+  Placement placement(draw, Vec3(-2, -2, -2), Vec3(2, 2, 2));
+  const int count = draw.integer(2, 8);
+  for (int i = 0; i < count; ++i) any_shape(draw, scene, placement, true);
+  return scene.str();
+}
+
+std::string round_drops(Draw& draw) {
+  SceneText scene("drops of every shape", 4.0);
+  scene.line("[world]\nsleeping = " + std::string(draw.coin() ? "true" : "false"));
+  scene.line("[[body]]\nshape = \"plane\"\nnormal = [0, 1, 0]\noffset = 0\nrestitution = " + SceneText::number(draw.uniform(0, 1)) +
+             "\nfriction = " + SceneText::number(draw.uniform(0, 1)));
+  Placement placement(draw, Vec3(-3, 1.0, -3), Vec3(3, 4, 3));
+  const int count = draw.integer(1, 10);
+  for (int i = 0; i < count; ++i) any_shape(draw, scene, placement, false);
+  return scene.str();
+}
+
+// A stack of 2 to 6 cylinders standing face on face (or capsules lying crosswise, each across the
+// one below), each of its own radius and mass, on the ground, sleeping off.
+std::string round_stack(Draw& draw) {
+  SceneText scene("a stack of cylinders", 5.0);
+  scene.line("[world]\nsleeping = false");
+  scene.line("[[body]]\nshape = \"plane\"\nnormal = [0, 1, 0]\noffset = 0");
+  const int count = draw.integer(2, 6);
+  const bool capsules = draw.coin();
+  const double friction = draw.uniform(0.4, 1);
+  double y = 0;
+  for (int i = 0; i < count; ++i) {
+    const double radius = draw.uniform(0.15, 0.4), height = draw.uniform(0.1, 0.6), mass = draw.uniform(0.5, 5);
+    if (capsules) {
+      // Lying, along x and z in turn: each rests on the one below at one point, held by friction.
+      scene.round("capsule", Vec3(0, y + radius, 0), radius, height, mass, Vec3::Zero(), Vec3::Zero(),
+                  i % 2 == 0 ? Vec3(0, 0, 90) : Vec3(90, 0, 0), 0, friction);
+      y += 2 * radius;
+    } else {
+      scene.round("cylinder", Vec3(0, y + height / 2, 0), radius, height, mass, Vec3::Zero(), Vec3::Zero(), Vec3(0, draw.uniform(0, 90), 0), 0,
+                  friction);
+      y += height;
+    }
+  }
+  return scene.str();
+}
+
 // A pyramid of boxes (2 to 8 rows) of any size, mass and friction from 0.4, built as the
 // benchmark builds it (rows touching), sleeping off.
 std::string pyramid(Draw& draw) {
@@ -297,6 +360,32 @@ TEST(GeneratedLaws, PyramidsHold) {
             });
 }
 
+// The same laws with capsules and cylinders among the spheres and boxes: every pair of shapes.
+TEST(GeneratedLaws, EveryPairOfShapesKeepsMomentaAndNeverGainsEnergy) {
+  check_law("free-round-collisions", 40, free_round_collisions, momenta_law([](double energy, double start_energy) {
+              return energy > start_energy * 1.01 ? breach_text("kinetic energy", energy, start_energy * 1.01) : std::string();
+            }));
+  check_law("round-drops", 40, round_drops,
+            [](const physics::World& world, const physics::StepRecord& start, const std::vector<physics::Body>&) {
+              const physics::StepRecord& now = world.record();
+              const double before = start.kinetic_energy + start.potential_energy;
+              const double energy = now.kinetic_energy + now.potential_energy;
+              return energy > before * 1.01 ? breach_text("energy", energy, before * 1.01) : std::string();
+            });
+}
+
+// Stacks of cylinders and of crossed capsules stand: no body moves more than 1 cm in 5 s.
+TEST(GeneratedLaws, StacksOfCylindersAndCapsulesHold) {
+  check_law("round-stack", 20, round_stack,
+            [](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>& initial) {
+              for (size_t i = 1; i < initial.size(); ++i) {
+                const double moved = (world.bodies()[i].position - initial[i].position).norm();
+                if (moved > 0.01) return breach_text(("body " + std::to_string(i) + " moved").c_str(), moved, 0.01);
+              }
+              return std::string();
+            });
+}
+
 // A light box (0.27 kg) pinched between two heavy balls (2.5 and 2.9 kg), frictionless, in the
 // plane (planar-collisions, seed 3617 of the generator as it was): the contact that holds the box
 // against one ball carries last sub-step's impulse into the next (the warm start), which throws the
@@ -381,6 +470,9 @@ TEST(GeneratedLaws, ASeedIsTheSameSceneWhateverTheCompiler) {
   EXPECT_EQ(scenes_hash("drops", drops), 0x7923258a195e1aafull);
   EXPECT_EQ(scenes_hash("drifts", drifts), 0xfa42999f856add0eull);
   EXPECT_EQ(scenes_hash("pyramid", pyramid), 0xe3905eb0c0c3310full);
+  EXPECT_EQ(scenes_hash("free-round-collisions", free_round_collisions), 0x899ff0751a0244acull);
+  EXPECT_EQ(scenes_hash("round-drops", round_drops), 0x3990fba562ce2f1dull);
+  EXPECT_EQ(scenes_hash("round-stack", round_stack), 0xeeb0c6b75f8bb92dull);
 }
 
 }  // namespace impulse::demos

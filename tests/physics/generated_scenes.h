@@ -79,6 +79,14 @@ class SceneText {
           << "\nangular_velocity = " << vector(angular_velocity) << "\nrotation = " << vector(rotation_degrees)
           << "\nrestitution = " << number(restitution) << "\nfriction = " << number(friction) << "\n";
   }
+  // A capsule or cylinder (`shape`), its axis along its own y.
+  void round(const char* shape, const Vec3& position, double radius, double height, double mass, const Vec3& velocity,
+             const Vec3& angular_velocity, const Vec3& rotation_degrees, double restitution, double friction) {
+    text_ << "[[body]]\nshape = \"" << shape << "\"\nradius = " << number(radius) << "\nheight = " << number(height)
+          << "\nmass = " << number(mass) << "\nposition = " << vector(position) << "\nvelocity = " << vector(velocity)
+          << "\nangular_velocity = " << vector(angular_velocity) << "\nrotation = " << vector(rotation_degrees)
+          << "\nrestitution = " << number(restitution) << "\nfriction = " << number(friction) << "\n";
+  }
   std::string str() const { return text_.str(); }
 
   // 17 significant digits: the file holds the generator's numbers exactly.
