@@ -21,7 +21,7 @@ def g(value):
     return "%.9g" % value
 
 
-@pytest.mark.parametrize("scene_file", ["assets/scenes/bounce.toml", "assets/scenes/s4_angular.toml"])
+@pytest.mark.parametrize("scene_file", ["assets/scenes/bounce.toml", "assets/scenes/s4_angular.toml", "assets/scenes/s5_shapes.toml"])
 def test_the_trace_is_what_impulse_simulate_writes(program, tmp_path, scene_file):
     bodies_csv, contacts_csv, world_csv = (str(tmp_path / n) for n in ("bodies.csv", "contacts.csv", "world.csv"))
     subprocess.run([program, "simulate", scene_file, "--every", "3", "--trace", bodies_csv, "--contacts", contacts_csv,
@@ -54,6 +54,17 @@ def test_the_trace_is_what_impulse_simulate_writes(program, tmp_path, scene_file
         values = [c.time[j], *c.point[j], *c.normal[j], c.penetration[j], c.normal_impulse[j], *c.friction_impulse[j]]
         assert row[1:4] == [str(c.step[j]), c.body_a[j], c.body_b[j]]
         assert row[:1] + row[4:] == [g(v) for v in values]
+
+
+def test_the_race_of_a_ball_a_cylinder_and_a_ring_from_a_notebook():
+    # a = g sin(theta) / (1 + I/mR^2) down the 15-degree incline: 5/7, 2/3 and 1/2 of g sin(theta).
+    trace = impulse.load("assets/scenes/s5_rolling_race.toml").simulate(progress=False)
+    g_sin = 9.81 * np.sin(np.radians(15))
+    first, last = np.searchsorted(trace.time, 0.5), np.searchsorted(trace.time, 2.0)
+    for b, share in zip(range(2, 5), (5 / 7, 2 / 3, 1 / 2)):
+        speed = np.linalg.norm(trace.velocity(b), axis=1)
+        a = (speed[last] - speed[first]) / (trace.time[last] - trace.time[first])
+        assert a == pytest.approx(share * g_sin, rel=0.01), trace.bodies[b]
 
 
 def test_to_pandas_has_the_csv_columns(program, tmp_path):
