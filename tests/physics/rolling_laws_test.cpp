@@ -184,6 +184,39 @@ TEST(RollingLaws, ACylinderRollingOnAFlatKeepsItsSpeedAndItsAxis) {
             });
 }
 
+// A cylinder standing on its face, set turning about a point of its rim (no slip: friction 1, no
+// bounce) with k times the energy that lifts its centre over that point, m g (sqrt(r^2 + h^2) - h),
+// h its half height: about the rim, I = m (r^2/4 + h^2/3) + m (r^2 + h^2). k 1.6: it topples and
+// lies on its side; k 0.6: it falls back and stands.
+std::string cylinder_tipped(Draw& draw) {
+  const double r = draw.uniform(0.05, 0.2), h = r * draw.uniform(1.5, 4), k = draw.coin() ? 1.6 : 0.6;
+  const double lift = kG * (std::hypot(r, h) - h), moment = r * r / 4 + h * h / 3 + r * r + h * h;  // per unit mass
+  const double w = std::sqrt(2 * k * lift / moment);
+  std::ostringstream text;
+  text << "[scene]\ntitle = \"a cylinder tipped\"\nduration = 3\n# k = " << k << "\n[[body]]\nname = \"ground\"\nshape = \"plane\"\n"
+       << "restitution = 0\nfriction = 1\n[[body]]\nname = \"cylinder\"\nshape = \"cylinder\"\nradius = " << SceneText::number(r)
+       << "\nheight = " << SceneText::number(2 * h) << "\nmass = 1\nrestitution = 0\nfriction = 1\nposition = "
+       << SceneText::vector(Vec3(0, h, 0)) << "\nvelocity = " << SceneText::vector(Vec3(w * h, w * r, 0))
+       << "\nangular_velocity = " << SceneText::vector(Vec3(0, 0, -w)) << "\n";
+  return text.str();
+}
+
+TEST(RollingLaws, ACylinderToppledWithEnoughEnergyToLiftItsCentreOverItsRimAndNotWithLess) {
+  check_law("cylinder-tipped", 20, cylinder_tipped,
+            [](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>& initial) {
+              if (world.time() < 3 - 1e-9) return std::string();
+              const physics::Body& start = initial[1];
+              const physics::Body& now = world.bodies()[1];
+              const double r = start.shape.radius, h = start.shape.half_height;
+              const double lift = kG * (std::hypot(r, h) - h), moment = r * r / 4 + h * h / 3 + r * r + h * h;
+              const double k = 0.5 * moment * start.angular_velocity.squaredNorm() / lift;
+              const double upright = std::abs((now.orientation * Vec3::UnitY()).y());
+              if (k > 1 && upright > 0.05) return breach_text("toppled with 1.6 times the energy, it stands: |axis . y| (to be under 0.05)", upright, 0.05);
+              if (k < 1 && upright < 0.999) return breach_text("with 0.6 times the energy, it fell: |axis . y| (to stay above 0.999)", upright, 0.999);
+              return std::string();
+            });
+}
+
 // The incline's hollow ball is a thin shell, 5/3 of a solid ball's moment; a hollow cube's is a
 // closed form too: 5 m L^2 / 18 for a side L (each face a thin plate).
 TEST(RollingLaws, AHollowBodysInertiaIsItsShells) {
@@ -231,6 +264,7 @@ TEST(RollingLaws, ASeedIsTheSameSceneWhateverTheCompiler) {
   EXPECT_EQ(scenes_hash("rolling-race", rolling_race), 0x51e0917e46c28396ull);
   EXPECT_EQ(scenes_hash("cylinder-race", cylinder_race), 0x2760dac125e73443ull);
   EXPECT_EQ(scenes_hash("cylinder-rolling", cylinder_rolling), 0x506366fbe78fa119ull);
+  EXPECT_EQ(scenes_hash("cylinder-tipped", cylinder_tipped), 0x7800e87b4ee7c7d3ull);
 }
 
 }  // namespace
