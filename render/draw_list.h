@@ -30,13 +30,16 @@ struct BoxItem {
   bool sleeping = false;
 };
 // A solid circular cylinder: its axis along its local y, its flat faces at y = +-half_height. (A
-// capsule is drawn as one with a sphere at each end.)
+// capsule is drawn as one with a sphere at each end.) spin_marks darkens alternate octants of its
+// own frame, as a sphere's: four sectors about its axis, swapped between its halves and carried
+// onto the caps, so the balls of a capsule, in its orientation, continue the pattern.
 struct CylinderItem {
   Vec3f centre;
   float radius = 0.5f;
   float half_height = 0.5f;
   Quatf orientation = Quatf::Identity();
   Colour colour;
+  bool spin_marks = true;
   bool sleeping = false;
 };
 // An arrow from `origin` along `direction` (its length is the arrow's length in metres).

@@ -39,7 +39,8 @@ Instance box_instance(const BoxItem& box) {
 
 Instance cylinder_instance(const CylinderItem& cylinder) {
   const Vec3f scale(cylinder.radius, cylinder.half_height, cylinder.radius);
-  return make_instance(cylinder.centre, cylinder.orientation, scale, cylinder.colour, cylinder.sleeping ? sleeping : plain);
+  const int style = (cylinder.spin_marks ? spin_marks : plain) | (cylinder.sleeping ? sleeping : plain);
+  return make_instance(cylinder.centre, cylinder.orientation, scale, cylinder.colour, style);
 }
 
 Instance point_instance(const Vec3f& position, float radius, const Colour& colour) {

@@ -21,8 +21,9 @@ static_assert(sizeof(Instance) == 29 * sizeof(float), "Instance must stay tightl
 
 Instance sphere_instance(const SphereItem& sphere);  // of make_icosphere, or an impostor quad
 Instance box_instance(const BoxItem& box);           // of make_cube
-// Of make_cylinder. Plain: the `edges` style darkens by unit-cube coordinates, which on the curved
-// side would draw lines where x or z is +-1.
+// Of make_cylinder. Never `edges`: it darkens by unit-cube coordinates, which on the curved side
+// would draw lines where x or z is +-1. `spin_marks` takes the sphere's octants of the unit
+// cylinder's coordinates: x and z scale alike, so its sectors are a ball's of the same frame.
 Instance cylinder_instance(const CylinderItem& cylinder);
 Instance point_instance(const Vec3f& position, float radius, const Colour& colour);  // a plain sphere
 

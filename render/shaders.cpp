@@ -62,7 +62,7 @@ constexpr const char* kSurface = R"(
 uniform float u_alpha;
 uniform float u_ambient_lift;  // arrows and points: flat, uniform colour
 
-const int kStyleSpinMarks = 1;  // sphere: alternate octants darker so rotation is visible
+const int kStyleSpinMarks = 1;  // sphere, cylinder: alternate octants darker so rotation is visible
 const int kStyleEdges = 2;      // box: thin dark outline along the edges
 const int kStyleSleeping = 4;   // pale and hatched: asleep, whatever the viewer's colour vision
 

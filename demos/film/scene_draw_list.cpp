@@ -55,6 +55,25 @@ float contact_body_size(const std::vector<physics::Body>& bodies, int body) {
   return body < 0 || body >= int(bodies.size()) ? INFINITY : float(body_size(bodies[body].shape));
 }
 
+// A plane other than the ground (an incline, a wall), drawn as a thin slab whose top face lies in
+// it: square about the plane's point nearest the camera's target, as wide as the camera is far
+// from it (no less than kSlabHalfSide), so it fills the view about the bodies it holds.
+constexpr float kSlabHalfSide = 6.0f;
+constexpr float kSlabHalfThickness = 0.01f;
+
+render::BoxItem plane_slab(const physics::Shape& plane, const render::Camera& camera, const render::Colour& colour) {
+  const physics::Vec3 normal = plane.normal.normalized();
+  const physics::Vec3 target = camera.target.cast<physics::Real>();
+  const physics::Vec3 nearest = target - (normal.dot(target) - plane.offset / plane.normal.norm()) * normal;
+  const float half_side = std::max(kSlabHalfSide, (camera.position - camera.target).norm());
+  render::BoxItem slab;
+  slab.centre = to_float(nearest - kSlabHalfThickness * normal);
+  slab.half_extents = {half_side, kSlabHalfThickness, half_side};
+  slab.orientation = render::Quatf::FromTwoVectors(render::Vec3f::UnitY(), normal.cast<float>());
+  slab.colour = colour;
+  return slab;
+}
+
 }  // namespace
 
 std::vector<BodyPose> poses_of(const std::vector<physics::Body>& bodies) {
@@ -106,25 +125,27 @@ render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::
         break;
       case physics::ShapeType::cylinder:
         list.cylinders.push_back({to_float(pose.position), float(body.shape.radius), float(body.shape.half_height),
-                                  pose.orientation.cast<float>(), colour, sleeping});
+                                  pose.orientation.cast<float>(), colour, true, sleeping});
         break;
       case physics::ShapeType::capsule: {
-        // The cylinder of its segment and a ball at each end (plain: octant marks on the half
-        // that shows would read as a separate spinning ball).
+        // The cylinder of its segment and a ball at each end, all marked in the capsule's frame:
+        // each ball's octants beyond the segment continue the segment's half they close.
         const render::Quatf orientation = pose.orientation.cast<float>();
         const render::Vec3f centre = to_float(pose.position);
         const float radius = float(body.shape.radius), half_height = float(body.shape.half_height);
-        list.cylinders.push_back({centre, radius, half_height, orientation, colour, sleeping});
+        list.cylinders.push_back({centre, radius, half_height, orientation, colour, true, sleeping});
         const render::Vec3f end = orientation * render::Vec3f(0.0f, half_height, 0.0f);
         for (const float side : {1.0f, -1.0f})
-          list.spheres.push_back({centre + side * end, radius, orientation, colour, false, sleeping});
+          list.spheres.push_back({centre + side * end, radius, orientation, colour, true, sleeping});
         break;
       }
       case physics::ShapeType::plane:
-        // The renderer draws one ground; a horizontal plane becomes it.
+        // The renderer draws one ground; a horizontal plane becomes it, any other a slab.
         if (body.shape.normal.y() > 0.999) {
           list.ground = true;
           list.ground_height = float(body.shape.offset);
+        } else {
+          list.boxes.push_back(plane_slab(body.shape, camera, colour));
         }
         break;
     }

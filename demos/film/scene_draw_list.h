@@ -24,7 +24,8 @@ void interpolate(const std::vector<BodyPose>& from, const std::vector<BodyPose>&
 render::Vec3f impulse_on(const physics::ContactRecord& contact, int body);
 
 // Joints are drawn as grey lines (rods, ropes) and dots (ball and hinge pivots) where the poses
-// put their anchors.
+// put their anchors. A horizontal plane is the renderer's ground; any other (an incline) a thin
+// slab in its colour, its top face in the plane, about the point nearest the camera's target.
 render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::Body>& bodies,
                                  const std::vector<BodyPose>& poses, const std::vector<physics::Joint>& joints,
                                  const std::vector<physics::ContactRecord>& contacts, const ArrowScales& scales,

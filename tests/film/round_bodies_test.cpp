@@ -40,8 +40,8 @@ void expect_colour(const render::Colour& colour, const demos::Colour& expected) 
 }
 
 // A capsule becomes the cylinder of its segment and a ball of its radius at each end, along its
-// rotated y axis, in its colour and sleeping look (the balls without spin marks); a cylinder becomes
-// one cylinder.
+// rotated y axis, in its colour and sleeping look, all spin-marked in its orientation (so the balls'
+// marks turn with it); a cylinder becomes one spin-marked cylinder.
 TEST(RoundBodies, ACapsuleIsACylinderAndTwoBallsAndACylinderIsOne) {
   const RoundBodies round;
   const render::DrawList list = round.draw_list();
@@ -55,12 +55,14 @@ TEST(RoundBodies, ACapsuleIsACylinderAndTwoBallsAndACylinderIsOne) {
   EXPECT_FLOAT_EQ(segment.radius, 0.2f);
   EXPECT_FLOAT_EQ(segment.half_height, 0.6f);
   EXPECT_TRUE(segment.orientation.isApprox(capsule.orientation.cast<float>()));
+  EXPECT_TRUE(segment.spin_marks);
   EXPECT_TRUE(segment.sleeping);
   expect_colour(segment.colour, round.scene.colours[0]);
   const physics::Vec3 axis = capsule.orientation * physics::Vec3::UnitY();
   for (const render::SphereItem& ball : list.spheres) {
     EXPECT_FLOAT_EQ(ball.radius, 0.2f);
-    EXPECT_FALSE(ball.spin_marks);
+    EXPECT_TRUE(ball.spin_marks);
+    EXPECT_TRUE(ball.orientation.isApprox(segment.orientation));
     EXPECT_TRUE(ball.sleeping);
     expect_colour(ball.colour, round.scene.colours[0]);
     // On the axis, 0.6 m from the centre.
@@ -77,6 +79,7 @@ TEST(RoundBodies, ACapsuleIsACylinderAndTwoBallsAndACylinderIsOne) {
   EXPECT_FLOAT_EQ(cylinder.radius, 0.3f);
   EXPECT_FLOAT_EQ(cylinder.half_height, 0.25f);
   EXPECT_TRUE(cylinder.orientation.isApprox(round.bodies[1].orientation.cast<float>()));
+  EXPECT_TRUE(cylinder.spin_marks);
   EXPECT_FALSE(cylinder.sleeping);
   expect_colour(cylinder.colour, round.scene.colours[1]);
 }

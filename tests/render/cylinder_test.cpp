@@ -1,6 +1,6 @@
 // Cylinders (CylinderItem, make_cylinder): an outward mesh, drawn where they project, round
-// outlines seen end on, shadows on the ground by either method, and outlines anti-aliased as well
-// as every other body's.
+// outlines seen end on, shadows on the ground by either method, outlines anti-aliased as well as
+// every other body's, and spin marks that turn with them (a capsule's balls' among them).
 #include "render/antialias_reference.h"
 #include "render/camera_view.h"
 #include "render/level_of_detail.h"
@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
+#include <vector>
 
 namespace impulse {
 namespace {
@@ -213,6 +214,119 @@ TEST(Cylinders, CastAShadowOnTheGroundByEitherMethod) {
   }
 }
 
+// A marked red is at most this share of the unmarked (the shader darkens the albedo to 0.74 in
+// linear light: about 0.86 on screen).
+constexpr float kMarkedAtMost = 0.92f;
+
+// Whether spin marks darken `world` on a body at `centre` turned by `orientation`: the octant
+// shader's rule (kSurface, octant_shade) in the body's own frame.
+bool marked_dark(const Vec3f& world, const Vec3f& centre, const render::Quatf& orientation) {
+  const Vec3f local = orientation.conjugate() * (world - centre);
+  return local.x() * local.y() * local.z() >= 0.0f;
+}
+
+// The point of the side of a cylinder lying along x about y = 0.5 at `x`, `radius` from its axis and
+// `degrees` round it from +z (towards the eye) towards +y.
+Vec3f on_side(float x, float radius, float degrees) {
+  const float angle = degrees * kPi / 180.0f;
+  return {x, 0.5f + radius * std::sin(angle), radius * std::cos(angle)};
+}
+
+// A cylinder lying along x, seen side on in a light that is the same either side of x = 0, turned
+// 0 and 45 degrees about its axis: spin-marked, a point of its side changes between dark and light
+// where its octant of the cylinder's frame changes, and otherwise keeps its colour (45 degrees is 8
+// of the mesh's 64 sides: the same facets, so the same shading); the halves either side of its
+// middle are marked oppositely. Unmarked, it looks the same turned or not and either side of its
+// middle: one colour up to shading.
+TEST(Cylinders, SpinMarksTurnWithTheCylinderAboutItsAxis) {
+  render::DrawList list;
+  list.ground = false;
+  list.towards_light = {0.0f, 1.0f, 0.35f};
+  list.camera.position = {0.0f, 0.5f, 6.0f};
+  list.camera.target = {0.0f, 0.5f, 0.0f};
+  render::Renderer renderer(kWidth, kHeight);
+  const Vec3f centre(0.0f, 0.5f, 0.0f);
+  auto turned = [](float degrees) {
+    return render::Quatf(Eigen::AngleAxisf(degrees * kPi / 180.0f, Vec3f::UnitX())) * lying_along_x();
+  };
+  auto frame_of = [&](float degrees, bool spin_marks) {
+    render::CylinderItem cylinder = red_cylinder(centre, 0.5f, 1.0f, turned(degrees));
+    cylinder.spin_marks = spin_marks;
+    list.cylinders = {cylinder};
+    return renderer.draw(list);
+  };
+  // Mid-sector at either turn (every boundary is at a multiple of 45 degrees), both halves.
+  std::vector<Vec3f> points;
+  for (const float x : {-0.5f, 0.5f})
+    for (const float degrees : {-67.5f, -22.5f, 22.5f, 67.5f}) points.push_back(on_side(x, 0.5f, degrees));
+
+  const render::Frame marked = frame_of(0.0f, true), marked_turned = frame_of(45.0f, true);
+  const render::Frame plain = frame_of(0.0f, false), plain_turned = frame_of(45.0f, false);
+  int changed = 0;
+  for (const Vec3f& at : points) {
+    const uint8_t *before = pixel_at(marked, list, at), *after = pixel_at(marked_turned, list, at);
+    ASSERT_TRUE(is_red(before) && is_red(after)) << at.transpose();
+    const bool dark_before = marked_dark(at, centre, turned(0.0f)), dark_after = marked_dark(at, centre, turned(45.0f));
+    std::printf("(%5.2f, %5.2f, %5.2f): red %3d -> %3d (%s -> %s)\n", at.x(), at.y(), at.z(), before[0], after[0],
+                dark_before ? "dark" : "light", dark_after ? "dark" : "light");
+    if (dark_before == dark_after) {
+      EXPECT_LE(difference(before, after), 2) << "unmoved mark at " << at.transpose();
+    } else {
+      ++changed;
+      const uint8_t *dark = dark_before ? before : after, *light = dark_before ? after : before;
+      EXPECT_LT(dark[0], kMarkedAtMost * light[0]) << "moved mark at " << at.transpose();
+    }
+    // The mirror image across the middle: the other half, marked the other way.
+    const Vec3f mirrored(-at.x(), at.y(), at.z());
+    const int red = before[0], mirrored_red = pixel_at(marked, list, mirrored)[0];
+    EXPECT_LT(std::min(red, mirrored_red), kMarkedAtMost * std::max(red, mirrored_red)) << at.transpose();
+
+    EXPECT_LE(difference(pixel_at(plain, list, at), pixel_at(plain_turned, list, at)), 1) << "plain at " << at.transpose();
+    EXPECT_LE(difference(pixel_at(plain, list, at), pixel_at(plain, list, mirrored)), 2) << "plain at " << at.transpose();
+  }
+  EXPECT_EQ(changed, 4);
+}
+
+// A capsule (a cylinder lying along x and a ball at each end, all in its orientation, turned 90
+// degrees about its axis): just beyond either end, the ball is dark or light as the cylinder just
+// inside it, round the side, where the two surfaces' normals are nearly the same (the light from
+// the front keeps the highlight off the points compared, and they are well inside the outline); and
+// at each angle one ball is dark where the other is light, as the cylinder's halves are.
+TEST(Cylinders, ACapsulesBallsContinueItsCylindersMarks) {
+  render::DrawList list;
+  list.ground = false;
+  list.towards_light = {0.0f, 0.35f, 1.0f};
+  list.camera.position = {0.0f, 0.5f, 6.0f};
+  list.camera.target = {0.0f, 0.5f, 0.0f};
+  const Vec3f centre(0.0f, 0.5f, 0.0f);
+  const float radius = 0.3f, half_height = 0.6f, gap = 0.04f;
+  const render::Quatf orientation = render::Quatf(Eigen::AngleAxisf(kPi / 2.0f, Vec3f::UnitX())) * lying_along_x();
+  list.cylinders.push_back(red_cylinder(centre, radius, half_height, orientation));
+  for (const float end : {-1.0f, 1.0f})
+    list.spheres.push_back({centre + orientation * Vec3f(0.0f, end * half_height, 0.0f), radius, orientation,
+                            list.cylinders[0].colour});
+  render::Renderer renderer(kWidth, kHeight);
+  const render::Frame& frame = renderer.draw(list);
+
+  int ball_red[2][2] = {};  // by end and angle
+  for (const float end : {-1.0f, 1.0f})
+    for (const float degrees : {-45.0f, 45.0f}) {  // mid-sector: the boundaries are at 90 k degrees
+      const Vec3f on_cylinder = on_side(end * (half_height - gap), radius, degrees);
+      const Vec3f on_ball = on_side(end * (half_height + gap), std::sqrt(radius * radius - gap * gap), degrees);
+      const uint8_t *cylinder = pixel_at(frame, list, on_cylinder), *ball = pixel_at(frame, list, on_ball);
+      ASSERT_TRUE(is_red(cylinder) && is_red(ball)) << on_ball.transpose();
+      const bool is_dark = marked_dark(on_cylinder, centre, orientation);
+      std::printf("end %+.0f at %5.1f degrees: cylinder %3d %3d %3d, ball %3d %3d %3d (%s)\n", end, degrees, cylinder[0],
+                  cylinder[1], cylinder[2], ball[0], ball[1], ball[2], is_dark ? "dark" : "light");
+      EXPECT_LE(difference(cylinder, ball), 6) << on_ball.transpose();
+      ball_red[end > 0][degrees > 0] = ball[0];
+    }
+  for (int angle = 0; angle < 2; ++angle) {
+    const int a = ball_red[0][angle], b = ball_red[1][angle];
+    EXPECT_LT(std::min(a, b), kMarkedAtMost * std::max(a, b)) << "angle " << angle;
+  }
+}
+
 // The drawn outlines are as smooth as the other bodies' (antialias_test.cpp): the default's mean
 // colour error against a 64x supersampled frame no worse than 4x multisampling's, on standing,
 // lying and tilted cylinders, a capsule (a cylinder and two spheres) and their ground shadows.
@@ -231,7 +345,7 @@ TEST(Cylinders, TheirOutlinesAreAntialiasedAsWellAsFourTimesMultisampling) {
   list.cylinders.push_back(capsule);
   for (const float end : {-1.0f, 1.0f})
     list.spheres.push_back({capsule.centre + tilt * Vec3f(0.0f, end * capsule.half_height, 0.0f), capsule.radius, tilt,
-                            capsule.colour, false});
+                            capsule.colour});
 
   const render::RendererSettings defaults;
   render::RendererSettings msaa, none;
