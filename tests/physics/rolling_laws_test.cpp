@@ -9,6 +9,7 @@
 // k = 1): 5/7, 2/3 and 1/2 of g sin theta. A cylinder rolling on a flat keeps its speed and axis.
 #include "tests/physics/generated_scenes.h"
 
+#include <functional>
 #include <memory>
 
 namespace impulse::demos {
@@ -21,10 +22,24 @@ using physics::Vec3;
 constexpr double kG = 9.81;
 constexpr double kFirst = 0.5, kLast = 1.5;  // s: the speeds compared (the contact settled by the first)
 
-struct Racer {
-  const char* name;
-  double k;  // I / (m R^2)
-};
+// The incline of `degrees` (up: its normal), as a tilted plane or (by a coin) a static box turned
+// as a ramp, 40 m long and `width` across.
+std::string incline(Draw& draw, double degrees, const Vec3& up, double friction, double width) {
+  std::ostringstream text;
+  if (draw.coin())
+    text << "[[body]]\nname = \"incline\"\nshape = \"plane\"\nnormal = " << SceneText::vector(up) << "\nfriction = "
+         << SceneText::number(friction) << "\n";
+  else
+    text << "[[body]]\nname = \"incline\"\nshape = \"box\"\nstatic = true\nsize = " << SceneText::vector(Vec3(40, 0.5, width))
+         << "\nposition = " << SceneText::vector(-0.25 * up) << "\nrotation = " << SceneText::vector(Vec3(0, 0, -degrees))
+         << "\nfriction = " << SceneText::number(friction) << "\n";
+  return text.str();
+}
+
+// The incline's normal, from the first body as it was built.
+Vec3 incline_up(const physics::Body& incline) {
+  return incline.shape.type == physics::ShapeType::plane ? incline.shape.normal : Vec3(incline.orientation * Vec3::UnitY());
+}
 
 // An incline of 10 to 30 degrees (a tilted plane, or a static box turned as a ramp) and three balls
 // across it: solid, hollow, and one of moments drawn between 0.1 and 1 m R^2. Friction enough to
@@ -36,13 +51,7 @@ std::string rolling_race(Draw& draw) {
   const double friction = draw.uniform(1.5 * std::max(k, 2.0 / 3) / (1 + std::max(k, 2.0 / 3)) * std::tan(theta), 1.0);
   std::ostringstream text;
   text << "[scene]\ntitle = \"rolling race\"\nduration = " << SceneText::number(kLast) << "\n";
-  if (draw.coin())
-    text << "[[body]]\nname = \"incline\"\nshape = \"plane\"\nnormal = " << SceneText::vector(up) << "\nfriction = "
-         << SceneText::number(friction) << "\n";
-  else
-    text << "[[body]]\nname = \"incline\"\nshape = \"box\"\nstatic = true\nsize = [40.0, 0.5, 6.0]\nposition = "
-         << SceneText::vector(-0.25 * up) << "\nrotation = " << SceneText::vector(Vec3(0, 0, -degrees)) << "\nfriction = "
-         << SceneText::number(friction) << "\n";
+  text << incline(draw, degrees, up, friction, 6);
   const char* inertia[3] = {"\"solid\"", "\"hollow\"", nullptr};
   for (int i = 0; i < 3; ++i) {
     const double radius = draw.uniform(0.05, 0.3);
@@ -56,36 +65,43 @@ std::string rolling_race(Draw& draw) {
   return text.str();
 }
 
+// Each racer's acceleration down the incline between kFirst and kLast (the contact settled by
+// the first) against g sin theta / (1 + k), `k(body, i)` the i-th racer's I / (m R^2); with
+// `across`, a cylinder's axis stays across the slope (along z).
+Law race_law(std::function<double(const physics::Body&, size_t)> k_of, bool across) {
+  auto first = std::make_shared<std::vector<double>>();  // each racer's speed down the incline at kFirst
+  return [first, k_of, across](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>& initial) {
+    const Vec3 up = incline_up(initial[0]);
+    const Vec3 down(up.y(), -up.x(), 0);
+    const double t = world.time();
+    if (std::abs(t - kFirst) < 1e-9) {
+      first->clear();
+      for (size_t i = 1; i < world.bodies().size(); ++i) first->push_back(world.bodies()[i].velocity.dot(down));
+    }
+    if (std::abs(t - kLast) > 1e-9) return std::string();
+    for (size_t i = 1; i < world.bodies().size(); ++i) {
+      const physics::Body& body = world.bodies()[i];
+      const double k = k_of(body, i), expected = kG * up.x() / (1 + k);
+      const double measured = (body.velocity.dot(down) - (*first)[i - 1]) / (kLast - kFirst);
+      if (std::abs(measured - expected) > 0.01 * expected) {
+        std::ostringstream what;
+        what << body.name << " (k = " << k << "): acceleration down the incline (m/s^2), to be g sin theta / (1 + k) within 1 %:";
+        return breach_text(what.str().c_str(), measured, expected);
+      }
+      const Vec3 axis = body.orientation * Vec3::UnitY();
+      if (across && body.shape.type == physics::ShapeType::cylinder && std::abs(axis.z()) < 1 - 1e-4)
+        return breach_text((body.name + ": its axis turned off the line across the slope: |axis . z| (to stay 1 within 1e-4)").c_str(),
+                           std::abs(axis.z()), 1);
+    }
+    return std::string();
+  };
+}
+
 TEST(RollingLaws, ABallRollsDownAnInclineAtGSinThetaOverOnePlusK) {
-  // Each case's speeds down the incline at kFirst, kept until kLast.
-  auto first = std::make_shared<std::vector<double>>();
-  check_law("rolling-race", 40, rolling_race,
-            [first](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>& initial) {
-              const physics::Body& incline = initial[0];
-              const Vec3 up = incline.shape.type == physics::ShapeType::plane ? incline.shape.normal
-                                                                             : Vec3(incline.orientation * Vec3::UnitY());
-              const double sin_theta = up.x();
-              const Vec3 down(up.y(), -up.x(), 0);
-              const double t = world.time();
-              if (std::abs(t - kFirst) < 1e-9) {
-                first->clear();
-                for (size_t i = 1; i < world.bodies().size(); ++i) first->push_back(world.bodies()[i].velocity.dot(down));
-              }
-              if (std::abs(t - kLast) > 1e-9) return std::string();
-              const double ks[2] = {0.4, 2.0 / 3};  // solid, hollow
-              for (size_t i = 1; i < world.bodies().size(); ++i) {
-                const physics::Body& ball = world.bodies()[i];
-                const double k = i == 3 ? ball.inertia_local(0, 0) / (ball.mass * ball.shape.radius * ball.shape.radius) : ks[i - 1];
-                const double expected = kG * sin_theta / (1 + k);
-                const double measured = (ball.velocity.dot(down) - (*first)[i - 1]) / (kLast - kFirst);
-                if (std::abs(measured - expected) > 0.01 * expected) {
-                  std::ostringstream what;
-                  what << ball.name << " (k = " << k << "): acceleration down the incline (m/s^2), to be g sin theta / (1 + k) within 1 %:";
-                  return breach_text(what.str().c_str(), measured, expected);
-                }
-              }
-              return std::string();
-            });
+  check_law("rolling-race", 40, rolling_race, race_law([](const physics::Body& ball, size_t i) {
+              const double ks[2] = {0.4, 2.0 / 3};  // solid, hollow; the third's moments are given
+              return i == 3 ? ball.inertia_local(0, 0) / (ball.mass * ball.shape.radius * ball.shape.radius) : ks[i - 1];
+            }, false));
 }
 
 // The incline (as rolling_race's) and across it a solid ball, a solid cylinder and a ring, the
@@ -96,13 +112,7 @@ std::string cylinder_race(Draw& draw) {
   const double friction = draw.uniform(1.5 * 0.5 * std::tan(theta), 1.0);  // a ring needs mu >= tan(theta) / 2
   std::ostringstream text;
   text << "[scene]\ntitle = \"cylinder race\"\nduration = " << SceneText::number(kLast) << "\n";
-  if (draw.coin())
-    text << "[[body]]\nname = \"incline\"\nshape = \"plane\"\nnormal = " << SceneText::vector(up) << "\nfriction = "
-         << SceneText::number(friction) << "\n";
-  else
-    text << "[[body]]\nname = \"incline\"\nshape = \"box\"\nstatic = true\nsize = [40.0, 0.5, 8.0]\nposition = "
-         << SceneText::vector(-0.25 * up) << "\nrotation = " << SceneText::vector(Vec3(0, 0, -degrees)) << "\nfriction = "
-         << SceneText::number(friction) << "\n";
+  text << incline(draw, degrees, up, friction, 8);
   for (int i = 0; i < 3; ++i) {
     const double radius = draw.uniform(0.05, 0.3);
     const double mass = draw.uniform(0.1, 5);
@@ -119,34 +129,8 @@ std::string cylinder_race(Draw& draw) {
 }
 
 TEST(RollingLaws, ABallACylinderAndARingRollDownAtFiveSeventhsTwoThirdsAndAHalfOfGSinTheta) {
-  auto first = std::make_shared<std::vector<double>>();
-  check_law("cylinder-race", 20, cylinder_race,
-            [first](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>& initial) {
-              const physics::Body& incline = initial[0];
-              const Vec3 up = incline.shape.type == physics::ShapeType::plane ? incline.shape.normal
-                                                                             : Vec3(incline.orientation * Vec3::UnitY());
-              const Vec3 down(up.y(), -up.x(), 0);
-              const double t = world.time();
-              if (std::abs(t - kFirst) < 1e-9) {
-                first->clear();
-                for (size_t i = 1; i < world.bodies().size(); ++i) first->push_back(world.bodies()[i].velocity.dot(down));
-              }
-              if (std::abs(t - kLast) > 1e-9) return std::string();
-              const double ks[3] = {0.4, 0.5, 1.0};  // I / (m R^2): a solid ball, a solid cylinder, a ring
-              for (size_t i = 1; i < world.bodies().size(); ++i) {
-                const physics::Body& body = world.bodies()[i];
-                const double expected = kG * up.x() / (1 + ks[i - 1]);
-                const double measured = (body.velocity.dot(down) - (*first)[i - 1]) / (kLast - kFirst);
-                if (std::abs(measured - expected) > 0.01 * expected)
-                  return breach_text((body.name + ": acceleration down the incline (m/s^2), to be g sin theta / (1 + k) within 1 %:").c_str(),
-                                     measured, expected);
-                const Vec3 axis = body.orientation * Vec3::UnitY();
-                if (i > 1 && std::abs(axis.z()) < 1 - 1e-4)
-                  return breach_text((body.name + ": its axis turned off the line across the slope: |axis . z| (to stay 1 within 1e-4)").c_str(),
-                                     std::abs(axis.z()), 1);
-              }
-              return std::string();
-            });
+  const double ks[3] = {0.4, 0.5, 1.0};  // I / (m R^2): a solid ball, a solid cylinder, a ring
+  check_law("cylinder-race", 20, cylinder_race, race_law([ks](const physics::Body&, size_t i) { return ks[i - 1]; }, true));
 }
 
 // A cylinder rolling on the ground (a plane or a static box), its axis along x or z, at 0.5 to 4
