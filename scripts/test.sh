@@ -15,7 +15,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 jobs=$(nproc)
-FUZZ_SECONDS=${FUZZ_SECONDS:-150}
+FUZZ_SECONDS=${FUZZ_SECONDS:-120}
 
 ./scripts/setup.sh --tests || { echo "0 passed, 1 failed (setup)"; exit 1; }
 
