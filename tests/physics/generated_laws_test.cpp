@@ -179,8 +179,10 @@ std::string free_round_collisions(Draw& draw) {
 std::string round_drops(Draw& draw) {
   SceneText scene("drops of every shape", 4.0);
   scene.line("[world]\nsleeping = " + std::string(draw.coin() ? "true" : "false"));
-  scene.line("[[body]]\nshape = \"plane\"\nnormal = [0, 1, 0]\noffset = 0\nrestitution = " + SceneText::number(draw.uniform(0, 1)) +
-             "\nfriction = " + SceneText::number(draw.uniform(0, 1)));
+  // Drawn one statement each: the operands of + are evaluated in an order the compiler chooses.
+  const double ground_restitution = draw.uniform(0, 1), ground_friction = draw.uniform(0, 1);
+  scene.line("[[body]]\nshape = \"plane\"\nnormal = [0, 1, 0]\noffset = 0\nrestitution = " + SceneText::number(ground_restitution) +
+             "\nfriction = " + SceneText::number(ground_friction));
   Placement placement(draw, Vec3(-3, 1.0, -3), Vec3(3, 4, 3));
   const int count = draw.integer(1, 10);
   for (int i = 0; i < count; ++i) any_shape(draw, scene, placement, false);
@@ -468,7 +470,7 @@ TEST(GeneratedLaws, ASeedIsTheSameSceneWhateverTheCompiler) {
   EXPECT_EQ(scenes_hash("drifts", drifts), 0xfa42999f856add0eull);
   EXPECT_EQ(scenes_hash("pyramid", pyramid), 0xe3905eb0c0c3310full);
   EXPECT_EQ(scenes_hash("free-round-collisions", free_round_collisions), 0x899ff0751a0244acull);
-  EXPECT_EQ(scenes_hash("round-drops", round_drops), 0x3990fba562ce2f1dull);
+  EXPECT_EQ(scenes_hash("round-drops", round_drops), 0x3545382489a9e7cbull);
   EXPECT_EQ(scenes_hash("round-stack", round_stack), 0xeeb0c6b75f8bb92dull);
 }
 
