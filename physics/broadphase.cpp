@@ -15,6 +15,15 @@ Aabb body_aabb(const Body& body, Real margin) {
     return {Vec3::Constant(-inf), Vec3::Constant(inf)};
   }
   const Shape& s = body.shape;
+  if (s.type == ShapeType::hull) {  // not symmetric: its corners' extremes
+    const Mat3 rotation = body.orientation.toRotationMatrix();
+    Vec3 low = Vec3::Constant(std::numeric_limits<Real>::infinity()), high = -low;
+    for (const Vec3& p : s.hull->corners) {
+      const Vec3 x = rotation * p;
+      low = low.cwiseMin(x), high = high.cwiseMax(x);
+    }
+    return {body.position + low - Vec3::Constant(margin), body.position + high + Vec3::Constant(margin)};
+  }
   Vec3 reach = Vec3::Constant(s.radius);
   if (s.type == ShapeType::box) {
     reach = body.orientation.toRotationMatrix().cwiseAbs() * s.half_extents;

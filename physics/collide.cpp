@@ -36,6 +36,7 @@ int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vect
         case box: return collide_sphere_box(a, ia, b, ib, margin, out);
         case capsule: return collide_sphere_capsule(a, ia, b, ib, margin, out);
         case cylinder: return collide_sphere_cylinder(a, ia, b, ib, margin, out);
+        case hull: return collide_sphere_hull(a, ia, b, ib, margin, out);
         case plane: return collide_sphere_plane(a, ia, b, ib, margin, out);
       }
       break;
@@ -48,6 +49,9 @@ int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vect
       return collide_convex(a, ia, b, ib, margin, out);
     case cylinder:
       if (b.shape.type == plane) return collide_cylinder_plane(a, ia, b, ib, margin, out);
+      return collide_convex(a, ia, b, ib, margin, out);
+    case hull:
+      if (b.shape.type == plane) return collide_hull_plane(a, ia, b, ib, margin, out);
       return collide_convex(a, ia, b, ib, margin, out);
     case plane:
       break;  // planes are static: two never meet

@@ -38,7 +38,10 @@ int collide_sphere_capsule(const Body& a, int ia, const Body& b, int ib, Real ma
 int collide_sphere_cylinder(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
 int collide_capsule_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
 int collide_cylinder_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
-// A box, capsule or cylinder against a capsule or cylinder: GJK and EPA, then clipping (collide_convex.cpp).
+int collide_sphere_hull(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
+int collide_hull_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
+// A box, capsule, cylinder or hull against a capsule, cylinder or hull: GJK and EPA, then clipping
+// (collide_convex.cpp).
 int collide_convex(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
 
 }  // namespace impulse::physics

@@ -1,11 +1,11 @@
-// Narrow phase of the convex pairs without a formula of their own (a capsule or a cylinder against a
-// box, a capsule or a cylinder): the normal and depth by GJK and EPA (libccd), then the points by
+// Narrow phase of the convex pairs without a formula of their own (a capsule, a cylinder or a hull
+// against a box, a capsule, a cylinder or a hull): the normal and depth by GJK and EPA (libccd), then the points by
 // clipping, as Jolt's and Box3D's manifolds are built:
 //   1. GJK on both shapes grown by half the margin: they overlap exactly where the surfaces are
 //      closer than the margin. The normal: of EPA's direction, MPR's and the faces' normals, the
 //      one along which the shapes are farthest apart (the separating axes' rule).
-//   2. Each shape's feature facing the other (supporting_feature): a face (a box's, a cylinder's
-//      flat face as an octagon of rim points), a line (a capsule's side: its ends' balls; a
+//   2. Each shape's feature facing the other (supporting_feature): a face (a box's, a hull's, a
+//      cylinder's flat face as an octagon of rim points), a line (a capsule's side: its ends' balls; a
 //      cylinder's side: the two rims' lowest points) or a point.
 //   3. Where a face's normal is the pair's normal within kFaceAngle, it is the reference: the other
 //      feature's points are clipped to the face's sides and measured from its plane, along its
@@ -49,6 +49,13 @@ Vec3 local_support(const Shape& s, const Vec3& d) {
     case ShapeType::cylinder: {
       const Real across = std::hypot(d.x(), d.z());
       return across > Real(1e-12) ? Vec3(s.radius * d.x() / across, y, s.radius * d.z() / across) : Vec3(0, y, 0);
+    }
+    case ShapeType::hull: {
+      const std::vector<Vec3>& corners = s.hull->corners;
+      size_t best = 0;
+      for (size_t i = 1; i < corners.size(); ++i)
+        if (corners[i].dot(d) > corners[best].dot(d)) best = i;
+      return corners[best];
     }
     default: return Vec3::Zero();
   }
@@ -144,6 +151,18 @@ Feature supporting_feature(const Body& body, const Mat3& rotation, const Vec3& d
       } else {
         f.add(world(Vec3(0, y, 0) + out));
       }
+      return f;
+    }
+    case ShapeType::hull: {  // the face most along d; a face of more corners than a feature holds, by every other one
+      const Hull& hull = *s.hull;
+      int best = 0;
+      for (int k = 1; k < int(hull.faces.size()); ++k)
+        if (hull.faces[k].normal.dot(d) > hull.faces[best].normal.dot(d)) best = k;
+      const HullFace& face = hull.faces[best];
+      const int stride = (face.count + kMostPoints - 1) / kMostPoints;
+      for (int k = 0; k < face.count; k += stride) f.add(world(hull.corners[hull.corner_of(face, k)]));
+      f.face = true;
+      f.face_normal = rotation * face.normal;
       return f;
     }
     default: return f;
@@ -258,12 +277,14 @@ int collide_convex(const Body& a, int ia, const Body& b, int ib, Real margin, st
     consider(-Vec3(ccdVec3X(&direction), ccdVec3Y(&direction), ccdVec3Z(&direction)));
     if (normal != before) epa_point = Vec3(ccdVec3X(&position), ccdVec3Y(&position), ccdVec3Z(&position));
   }
-  for (int side = 0; side < 2; ++side) {  // the faces' normals: a box's three axes, a cylinder's
+  for (int side = 0; side < 2; ++side) {  // the faces' normals: a box's three axes, a cylinder's, a hull's
     const Body& body = side == 0 ? a : b;
     const Mat3& rotation = side == 0 ? rotation_a : rotation_b;
     if (body.shape.type == ShapeType::box)
       for (int k = 0; k < 3; ++k) consider(rotation.col(k)), consider(-rotation.col(k));
     if (body.shape.type == ShapeType::cylinder) consider(rotation.col(1)), consider(-rotation.col(1));
+    if (body.shape.type == ShapeType::hull)  // A leaves B against A's face's normal, along B's
+      for (const HullFace& face : body.shape.hull->faces) consider(rotation * face.normal * (side == 0 ? -1 : 1));
   }
   if (separation > margin) return 0;
   const Real epa_separation = separation;

@@ -18,6 +18,7 @@ Real shape_volume(const Shape& shape) {
     case ShapeType::capsule:
       return std::numbers::pi * shape.radius * shape.radius * (2 * shape.half_height + Real(4) / 3 * shape.radius);
     case ShapeType::cylinder: return std::numbers::pi * shape.radius * shape.radius * (2 * shape.half_height);
+    case ShapeType::hull: return shape.hull->volume;
     case ShapeType::plane: return 0;
   }
   return 0;
@@ -58,6 +59,7 @@ Mat3 shape_unit_inertia(const Shape& shape) {
       const Real r2 = shape.radius * shape.radius, h2 = shape.half_height * shape.half_height;
       return about_y(r2 / 2, r2 / 4 + h2 / 3);
     }
+    case ShapeType::hull: return shape.hull->unit_inertia;
     case ShapeType::plane: return Mat3::Zero();
   }
   return Mat3::Zero();
@@ -89,6 +91,7 @@ Mat3 shape_unit_shell_inertia(const Shape& shape) {
       const Real r2 = shape.radius * shape.radius, h2 = shape.half_height * shape.half_height;
       return about_y(r2, r2 / 2 + h2 / 3);
     }
+    case ShapeType::hull: return shape.hull->unit_shell_inertia;
     case ShapeType::plane: return Mat3::Zero();
   }
   return Mat3::Zero();
@@ -102,6 +105,11 @@ Real reach_along(const Shape& shape, const Quat& orientation, const Vec3& d) {
     case ShapeType::box: return local.cwiseAbs().dot(shape.half_extents);
     case ShapeType::capsule: return shape.half_height * along + shape.radius;
     case ShapeType::cylinder: return shape.half_height * along + shape.radius * across;
+    case ShapeType::hull: {
+      Real reach = -std::numeric_limits<Real>::infinity();
+      for (const Vec3& p : shape.hull->corners) reach = std::max(reach, p.dot(local));
+      return reach;
+    }
     case ShapeType::plane: return 0;
   }
   return 0;
@@ -113,6 +121,11 @@ Real bounding_radius(const Shape& shape) {
     case ShapeType::box: return shape.half_extents.norm();
     case ShapeType::capsule: return shape.half_height + shape.radius;
     case ShapeType::cylinder: return std::sqrt(shape.radius * shape.radius + shape.half_height * shape.half_height);
+    case ShapeType::hull: {
+      Real farthest = 0;
+      for (const Vec3& p : shape.hull->corners) farthest = std::max(farthest, p.norm());
+      return farthest;
+    }
     case ShapeType::plane: return 0;
   }
   return 0;
@@ -124,6 +137,11 @@ Real thinnest_half_size(const Shape& shape) {
     case ShapeType::box: return shape.half_extents.minCoeff();
     case ShapeType::capsule: return shape.radius;
     case ShapeType::cylinder: return std::min(shape.radius, shape.half_height);
+    case ShapeType::hull: {  // the nearest face from the centre
+      Real nearest = std::numeric_limits<Real>::infinity();
+      for (const HullFace& face : shape.hull->faces) nearest = std::min(nearest, face.offset);
+      return nearest;
+    }
     case ShapeType::plane: return std::numeric_limits<Real>::infinity();
   }
   return 0;
@@ -144,6 +162,9 @@ std::string shape_problem(const Shape& shape) {
       if (!(shape.radius > 0) || !std::isfinite(shape.radius)) return "radius must be a finite number > 0, got " + num(shape.radius);
       if (!(shape.half_height > 0) || !std::isfinite(shape.half_height))
         return "height must be a finite number > 0, got " + num(2 * shape.half_height);
+      return {};
+    case ShapeType::hull:
+      if (!shape.hull || shape.hull->faces.size() < 4 || !(shape.hull->volume > 0)) return "a hull must enclose a volume";
       return {};
     case ShapeType::plane:
       if (!is_finite(shape.normal) || shape.normal.norm() < Real(1e-9)) return "normal must be a non-zero finite vector";

@@ -1,19 +1,22 @@
 // Collision shapes and their mass properties.
 #pragma once
+#include "physics/hull.h"
 #include "physics/math.h"
 
+#include <memory>
 #include <string>
 
 namespace impulse::physics {
 
 // The order is collide()'s: a pair is dispatched with A the earlier type.
-enum class ShapeType { sphere, box, capsule, cylinder, plane };
+enum class ShapeType { sphere, box, capsule, cylinder, hull, plane };
 
 // A shape in its body's local frame. A plane is static only: the points x with
 // dot(normal, x) = offset, solid below (the side opposite the normal). A capsule is the points
 // within `radius` of the segment from -half_height to +half_height along the body's y (Bullet's,
 // Jolt's and MuJoCo's: `height`, the segment's length, leaves out the caps); a cylinder has its
-// axis along y and its flat faces at y = +-half_height.
+// axis along y and its flat faces at y = +-half_height. A hull's corners are about its centre of
+// mass, in its principal axes (hull.h's place_hull).
 struct Shape {
   ShapeType type = ShapeType::sphere;
   Real radius = 0.5;                   // sphere, capsule, cylinder
@@ -21,11 +24,13 @@ struct Shape {
   Vec3 half_extents{0.5, 0.5, 0.5};    // box
   Vec3 normal{0, 1, 0};                // plane, world space
   Real offset = 0;                     // plane
+  std::shared_ptr<const Hull> hull;    // hull
 
   static Shape sphere(Real r) { Shape s; s.type = ShapeType::sphere; s.radius = r; return s; }
   static Shape box(const Vec3& h) { Shape s; s.type = ShapeType::box; s.half_extents = h; return s; }
   static Shape capsule(Real r, Real half) { Shape s; s.type = ShapeType::capsule; s.radius = r; s.half_height = half; return s; }
   static Shape cylinder(Real r, Real half) { Shape s; s.type = ShapeType::cylinder; s.radius = r; s.half_height = half; return s; }
+  static Shape convex(std::shared_ptr<const Hull> h) { Shape s; s.type = ShapeType::hull; s.hull = std::move(h); return s; }
   static Shape plane(const Vec3& n, Real d) { Shape s; s.type = ShapeType::plane; s.normal = n; s.offset = d; return s; }
 };
 
@@ -49,7 +54,8 @@ Real reach_along(const Shape& shape, const Quat& orientation, const Vec3& d);
 // Distance from the centre to the farthest point of the shape (0 for a plane).
 Real bounding_radius(const Shape& shape);
 // Half the shape's thinnest size: a sphere's or capsule's radius, a box's smallest half extent, the
-// smaller of a cylinder's radius and half height (a plane: infinite).
+// smaller of a cylinder's radius and half height, a hull's nearest face from its centre (a plane:
+// infinite).
 Real thinnest_half_size(const Shape& shape);
 
 // Why a shape is impossible ("radius must be > 0, got -1"), or empty when it is fine.

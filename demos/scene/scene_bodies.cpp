@@ -33,7 +33,12 @@ void read_body(const TableReader& top, const toml::table& table, int index, Scen
   if (auto name = table.get_as<std::string>("name")) def.name = name->get();
   TableReader r = top.child(table, "[[body]] '" + def.name + "'");
   r.get("name");
-  const std::string shape = r.choice("shape", "", {"sphere", "box", "capsule", "cylinder", "plane"});
+  const std::string shape =
+      r.choice("shape", "", {"sphere", "box", "capsule", "cylinder", "hull", "wedge", "tetrahedron", "prism", "plane"});
+  // A hull's points in the body's frame, about `position` (its centre of mass and principal axes
+  // are found once the inertia's spread is known).
+  std::vector<Vec3> points;
+  std::string points_field;
   if (shape == "sphere") {
     def.shape = physics::Shape::sphere(r.number("radius", 0.5, 0, kLargestSize, true));
   } else if (shape == "capsule" || shape == "cylinder") {
@@ -42,6 +47,23 @@ void read_body(const TableReader& top, const toml::table& table, int index, Scen
     const Real radius = r.number("radius", 0.5, 0, kLargestSize, true);
     const Real height = r.number("height", 1, 0, kLargestSize, true);
     def.shape = shape == "capsule" ? physics::Shape::capsule(radius, height / 2) : physics::Shape::cylinder(radius, height / 2);
+  } else if (shape == "hull") {
+    points_field = "points";
+    points = r.points("points", kLargestSize, 1000);
+    if (points.empty()) r.fail(r.get("points"), "points", "a hull needs its points: points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]] (metres, in the body's frame)");
+  } else if (shape == "wedge") {  // the right triangle in x-y, its right angle at (-x/2, -y/2), drawn along z
+    points_field = "size";
+    const Vec3 size = r.vec3("size", Vec3(1, 0.5, 0.5), kLargestSize, "m", "a lecture's bodies are smaller");
+    if (!(size.minCoeff() > 0)) r.fail(r.get("size"), "size", "every edge must be > 0 (metres: [x, y, z])");
+    points = physics::wedge_points(size);
+  } else if (shape == "tetrahedron") {  // regular, one face down
+    points_field = "size";
+    points = physics::tetrahedron_points(r.number("size", 0.5, 0, kLargestSize, true));
+  } else if (shape == "prism") {  // `sides` sides about the y axis
+    points_field = "sides";
+    const int sides = r.integer("sides", 6, 3, 16);
+    const Real radius = r.number("radius", 0.5, 0, kLargestSize, true);
+    points = physics::prism_points(sides, radius, r.number("height", 1, 0, kLargestSize, true));
   } else if (shape == "box") {
     const Vec3 size = r.vec3("size", Vec3(1, 1, 1), kLargestSize, "m", "a lecture's bodies are smaller");
     if (!(size.minCoeff() > 0)) r.fail(r.get("size"), "size", "every edge must be > 0 (metres: [x, y, z])");
@@ -78,6 +100,17 @@ void read_body(const TableReader& top, const toml::table& table, int index, Scen
   read_material_kind(r, scene, def);
   def.position = r.vec3("position", def.position, kFarthest, "m", kFarthestWhy);
   def.orientation = rotation_from_degrees(r.vec3("rotation", Vec3::Zero()));
+  if (!points.empty()) {
+    physics::PlacedHull placed;
+    try {
+      placed = physics::place_hull(points, def.spread == physics::MassSpread::hollow);
+    } catch (const std::invalid_argument& error) {
+      r.fail(r.get(points_field), points_field, error.what());
+    }
+    def.shape = physics::Shape::convex(placed.hull);
+    def.position += physics::rotate(def.orientation, placed.centre);
+    def.orientation = (def.orientation * placed.frame).normalized();
+  }
   def.velocity = r.vec3("velocity", def.velocity, kFastest, "m/s", kFastestWhy);
   def.angular_velocity = r.vec3("angular_velocity", def.angular_velocity, kFastestSpin, "rad/s", kFastestSpinWhy);
   def.planar_axis = read_planar(r, scene.planar_axis);

@@ -178,6 +178,31 @@ physics::Vec3 TableReader::vec3(std::string_view key, const physics::Vec3& fallb
   return v;
 }
 
+std::vector<physics::Vec3> TableReader::points(std::string_view key, double max_length, size_t most) {
+  const toml::node* node = get(key);
+  if (!node) return {};
+  const toml::array* array = node->as_array();
+  const char* expected = "must be a list of points, each three numbers: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]";
+  if (!array) fail(node, key, expected);
+  if (array->size() > most) fail(node, key, "has " + std::to_string(array->size()) + " points; at most " + std::to_string(most));
+  std::vector<physics::Vec3> out;
+  for (size_t i = 0; i < array->size(); ++i) {
+    const toml::array* point = array->get(i)->as_array();
+    if (!point || point->size() != 3) fail(array->get(i), key, expected);
+    physics::Vec3 v;
+    for (int k = 0; k < 3; ++k) {
+      const toml::node& item = *point->get(k);
+      if (auto d = item.value_exact<double>()) v[k] = *d;
+      else if (auto n = item.value_exact<int64_t>()) v[k] = physics::Real(*n);
+      else fail(array->get(i), key, expected);
+    }
+    if (!physics::is_finite(v) || v.norm() > max_length)
+      fail(array->get(i), key, "point " + std::to_string(i + 1) + " must be finite and at most " + std::to_string(int(max_length)) + " m from the body's origin");
+    out.push_back(v);
+  }
+  return out;
+}
+
 Colour TableReader::colour(std::string_view key, Colour fallback) {
   const toml::node* node = get(key);
   if (!node) return fallback;

@@ -70,6 +70,8 @@ class TableReader {
   // The same, refused when longer than `max_length` (in `unit`), saying `why`.
   physics::Vec3 vec3(std::string_view key, const physics::Vec3& fallback, double max_length, const char* unit,
                      const char* why);
+  // A list of points [[x, y, z], ...], each at most `max_length` from the origin; empty when absent.
+  std::vector<physics::Vec3> points(std::string_view key, double max_length, size_t most);
   Colour colour(std::string_view key, Colour fallback);
 
   // The sub-table `key` of this table, or null when absent; anything but a table is an error.
