@@ -153,14 +153,16 @@ Feature supporting_feature(const Body& body, const Mat3& rotation, const Vec3& d
       }
       return f;
     }
-    case ShapeType::hull: {  // the face most along d; a face of more corners than a feature holds, by every other one
+    case ShapeType::hull: {  // the face most along d: its corners, or its quad where it has more than four
       const Hull& hull = *s.hull;
       int best = 0;
       for (int k = 1; k < int(hull.faces.size()); ++k)
         if (hull.faces[k].normal.dot(d) > hull.faces[best].normal.dot(d)) best = k;
       const HullFace& face = hull.faces[best];
-      const int stride = (face.count + kMostPoints - 1) / kMostPoints;
-      for (int k = 0; k < face.count; k += stride) f.add(world(hull.corners[hull.corner_of(face, k)]));
+      if (face.count > 4)
+        for (const Vec3& q : face.quad) f.add(world(q));
+      else
+        for (int k = 0; k < face.count; ++k) f.add(world(hull.corners[hull.corner_of(face, k)]));
       f.face = true;
       f.face_normal = rotation * face.normal;
       return f;
@@ -234,6 +236,59 @@ int clip_to_face(const Feature& reference, const Feature& incident, std::array<C
   return n;
 }
 
+// Where more than four clipped points all touch (a face resting on a face), four points on the
+// overlap's sides in their place, as a hull's face has its quad (hull.h): along the rays from the
+// overlap's centre to +-a u +- b v, with u along the reference face's first side (fixed in its body),
+// v = normal x u, and a, b the overlap's spread along them. Four of its corners could leave a side
+// of it unsupported near its centre, and a stack leans there. A point between two clipped points
+// lies on the incident face: its place (and separation) in proportion. Returns the new count.
+int boundary_quad(const Feature& reference, const Vec3& on_plane, Real margin, std::array<Clipped, 32>& clipped, int count) {
+  if (count <= 4) return count;
+  const Vec3& n = reference.face_normal;
+  for (int i = 0; i < count; ++i)
+    if (n.dot(clipped[i].x - on_plane) > margin) return count;
+  Vec3 u = reference.points[1] - reference.points[0];
+  u = (u - n * n.dot(u)).normalized();
+  const Vec3 v = n.cross(u);
+  std::array<Eigen::Matrix<Real, 2, 1>, 32> p;
+  for (int i = 0; i < count; ++i) p[i] = {u.dot(clipped[i].x - on_plane), v.dot(clipped[i].x - on_plane)};
+  // The overlap's area, centre and spread, by triangles from its first point.
+  Real area = 0;
+  Eigen::Matrix<Real, 2, 1> first = Eigen::Matrix<Real, 2, 1>::Zero(), second = Eigen::Matrix<Real, 2, 1>::Zero();
+  for (int i = 1; i + 1 < count; ++i) {
+    const auto b = p[i] - p[0], c = p[i + 1] - p[0];
+    const Real piece = (b.x() * c.y() - b.y() * c.x()) / 2;
+    const auto sum = b + c;
+    area += piece;
+    first += piece * sum / 3;
+    second += piece / 12 * (b.cwiseAbs2() + c.cwiseAbs2() + sum.cwiseAbs2());
+  }
+  if (!(std::abs(area) > Real(1e-12))) return count;
+  const Eigen::Matrix<Real, 2, 1> centre = p[0] + first / area;
+  const Eigen::Matrix<Real, 2, 1> spread = (second / area - (first / area).cwiseAbs2()).cwiseMax(Real(0)).cwiseSqrt();
+  std::array<Clipped, 32> quad;
+  const Real su[4] = {1, -1, -1, 1}, sv[4] = {1, 1, -1, -1};
+  for (int q = 0; q < 4; ++q) {
+    const Eigen::Matrix<Real, 2, 1> d(su[q] * spread.x(), sv[q] * spread.y());
+    // The nearest side the ray leaves by: centre + d t = p_i + (p_j - p_i) s, 0 <= s <= 1, t > 0.
+    Real best_t = INFINITY;
+    for (int i = 0; i < count; ++i) {
+      const int j = (i + 1) % count;
+      const auto e = p[j] - p[i], w = p[i] - centre;
+      const Real det = d.x() * -e.y() + e.x() * d.y();  // of [d, -e]
+      if (std::abs(det) < Real(1e-18)) continue;
+      const Real t = (w.x() * -e.y() + e.x() * w.y()) / det, s = (d.x() * w.y() - d.y() * w.x()) / det;
+      if (t > 0 && s >= 0 && s <= 1 && t < best_t) {
+        best_t = t;
+        quad[q] = {clipped[i].x + (clipped[j].x - clipped[i].x) * s, 200 + q};
+      }
+    }
+    if (!std::isfinite(best_t)) return count;
+  }
+  std::copy(quad.begin(), quad.begin() + 4, clipped.begin());
+  return 4;
+}
+
 }  // namespace
 
 int collide_convex(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
@@ -304,8 +359,9 @@ int collide_convex(const Body& a, int ia, const Body& b, int ib, Real margin, st
     // The other's feature again, along the face's normal.
     const Feature other = reference == 1 ? supporting_feature(a, rotation_a, -n) : supporting_feature(b, rotation_b, n);
     std::array<Clipped, 32> clipped;
-    const int count = clip_to_face(face, other, clipped);
+    int count = clip_to_face(face, other, clipped);
     const Vec3& on_plane = face.points[0];
+    count = boundary_quad(face, on_plane, margin, clipped, count);
     for (int i = 0; i < count; ++i) {
       const Vec3& x = clipped[i].x;
       const Vec3 projected = x - face.face_normal * face.face_normal.dot(x - on_plane);

@@ -73,9 +73,12 @@ int collide_sphere_hull(const Body& a, int ia, const Body& b, int ib, Real margi
   return 1;
 }
 
-// A hull (A) against a plane (B): the corners of the face that looks most against the plane (as a
-// box's, collide_box.cpp) and the lowest corner, those below the plane plus the margin.
+// A hull (A) against a plane (B): the face that looks most against the plane (as a box's,
+// collide_box.cpp), by its corners or, where it has more than four, its quad (hull.h), below the
+// plane plus the margin; and the lowest corner where it is deeper than those by more than kDeeper
+// (a face tipped onto the plane).
 int collide_hull_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
+  constexpr Real kDeeper = 0.0005;  // m
   const Hull& hull = *a.shape.hull;
   const Mat3 rotation = a.orientation.toRotationMatrix();
   const Vec3& n = b.shape.normal;
@@ -89,18 +92,27 @@ int collide_hull_plane(const Body& a, int ia, const Body& b, int ib, Real margin
     if (hull.faces[f].normal.dot(down) > hull.faces[facing].normal.dot(down)) facing = f;
 
   const size_t first = out.size();
-  auto add = [&](int i) {
-    const Vec3 corner = a.position + rotation * hull.corners[i];
-    const Real separation = n.dot(corner) - b.shape.offset;
-    if (separation <= margin) out.push_back({ia, ib, corner - n * (separation / 2), n, separation, feature::corner(i)});
+  Real deepest = INFINITY;
+  auto add = [&](const Vec3& local, uint32_t id) {
+    const Vec3 point = a.position + rotation * local;
+    const Real separation = n.dot(point) - b.shape.offset;
+    deepest = std::min(deepest, separation);
+    if (separation <= margin) out.push_back({ia, ib, point - n * (separation / 2), n, separation, id});
   };
   const HullFace& face = hull.faces[facing];
   bool lowest_added = false;
-  for (int k = 0; k < face.count; ++k) {
-    add(hull.corner_of(face, k));
-    lowest_added = lowest_added || hull.corner_of(face, k) == lowest;
+  if (face.count > 4) {
+    for (int q = 0; q < 4; ++q) add(face.quad[q], feature::corner(int(hull.corners.size()) + q));
+  } else {
+    for (int k = 0; k < face.count; ++k) {
+      add(hull.corners[hull.corner_of(face, k)], feature::corner(hull.corner_of(face, k)));
+      lowest_added = lowest_added || hull.corner_of(face, k) == lowest;
+    }
   }
-  if (!lowest_added) add(lowest);
+  if (!lowest_added) {
+    const Real lowest_separation = n.dot(a.position + rotation * hull.corners[lowest]) - b.shape.offset;
+    if (lowest_separation < deepest - kDeeper) add(hull.corners[lowest], feature::corner(lowest));
+  }
   Vec3 t1, t2;
   tangent_basis(n, t1, t2);
   return reduce_manifold(out, first, n, a.position, search_direction(t1, t2));

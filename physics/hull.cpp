@@ -118,6 +118,49 @@ Moments moments_about(const Hull& hull, const Vec3& centre) {
 
 Mat3 inertia_of(const Mat3& second) { return Mat3::Identity() * second.trace() - second; }
 
+// A face's quad (HullFace::quad): its area's centre c and second moments in its plane, the
+// principal axes u, v = n x u, and the sides' crossings of the rays from c along +-a u +- b v (a, b:
+// the spreads along u and v).
+void with_quad(const Hull& hull, HullFace& face) {
+  const Vec3& n = face.normal;
+  const Vec3 p0 = hull.corners[hull.corner_of(face, 0)];
+  Real area = 0;
+  Vec3 first = Vec3::Zero();
+  Mat3 second = Mat3::Zero();
+  for (int k = 1; k + 1 < face.count; ++k) {
+    const Vec3 b = hull.corners[hull.corner_of(face, k)] - p0, c = hull.corners[hull.corner_of(face, k + 1)] - p0;
+    const Real piece = b.cross(c).dot(n) / 2;
+    const Vec3 s = b + c;
+    area += piece;
+    first += piece * s / 3;
+    second += piece / 12 * (b * b.transpose() + c * c.transpose() + s * s.transpose());
+  }
+  const Vec3 centre = p0 + first / area;
+  const Mat3 spread = (second - first * first.transpose() / area) / area;  // about the centre, per unit area
+  Vec3 u = std::abs(n.x()) < Real(0.9) ? Vec3::UnitX() : Vec3::UnitY();
+  u = (u - n * n.dot(u)).normalized();
+  Vec3 v = n.cross(u);
+  const Real uu = u.dot(spread * u), vv = v.dot(spread * v), uv = u.dot(spread * v);
+  const Real angle = std::atan2(2 * uv, uu - vv) / 2;  // the principal axes in the plane
+  const Vec3 pu = std::cos(angle) * u + std::sin(angle) * v;
+  u = pu;
+  v = n.cross(u);
+  const Real a = std::sqrt(std::max(u.dot(spread * u), Real(0))), b = std::sqrt(std::max(v.dot(spread * v), Real(0)));
+  const Real su[4] = {1, -1, -1, 1}, sv[4] = {1, 1, -1, -1};
+  for (int q = 0; q < 4; ++q) {
+    const Vec3 d = su[q] * a * u + sv[q] * b * v;
+    // The nearest side the ray crosses: t with (x_k + (x_k+1 - x_k) s) = centre + d t.
+    Real t = INFINITY;
+    for (int k = 0; k < face.count; ++k) {
+      const Vec3 x0 = hull.corners[hull.corner_of(face, k)], x1 = hull.corners[hull.corner_of(face, (k + 1) % face.count)];
+      const Vec3 outward = (x1 - x0).cross(n);  // the side's outward normal in the plane
+      const Real closing = outward.dot(d);
+      if (closing > 0) t = std::min(t, outward.dot(x0 - centre) / closing);
+    }
+    face.quad[q] = centre + d * t;
+  }
+}
+
 Vec3 corners_mean(const Hull& hull) {
   Vec3 mean = Vec3::Zero();
   for (const Vec3& p : hull.corners) mean += p;
@@ -145,6 +188,7 @@ Hull moved(const Hull& hull, const Vec3& origin, const Mat3& rotation) {
   for (HullFace& face : out.faces) {
     face.normal = rotation.transpose() * face.normal;
     face.offset = face.normal.dot(out.corners[out.corner_of(face, 0)]);
+    for (Vec3& q : face.quad) q = rotation.transpose() * (q - origin);
   }
   with_mass(out);
   return out;
@@ -186,6 +230,7 @@ Hull convex_hull(std::span<const Vec3> points) {
       newell += hull.corners[hull.corner_of(face, k)].cross(hull.corners[hull.corner_of(face, (k + 1) % face.count)]);
     if (newell.dot(face.normal) < 0) std::reverse(hull.face_corners.begin() + face.first, hull.face_corners.end());
     face.offset = face.normal.dot(hull.corners[hull.corner_of(face, 0)]);
+    with_quad(hull, face);
     hull.faces.push_back(face);
   }
   with_mass(hull);

@@ -12,6 +12,12 @@ struct HullFace {
   Vec3 normal = Vec3::UnitY();  // outward, unit
   Real offset = 0;              // dot(normal, x) = offset on the face: its distance from the origin
   int first = 0, count = 0;     // its corners, Hull::face_corners[first, first + count), counter-clockwise seen from outside
+  // Four points on its sides that stand for a face of more corners where it touches (a pair keeps
+  // four contact points): counter-clockwise, along the face's principal axes from its centre, each
+  // ray scaled by the face's spread that way. Four corners of a pentagon would leave one side of it
+  // unsupported, 0.31 of its radius from its centre; these leave a regular polygon's centre more
+  // than half its apothem from each of their sides.
+  Vec3 quad[4];
 };
 
 struct Hull {

@@ -122,6 +122,34 @@ TEST(Hull, APrismsVolumeIsItsPolygonsAreaTimesItsHeight) {
   }
 }
 
+TEST(Hull, AFacesQuadLiesOnItsSidesAndLeavesNoSideOfARegularPolygonNearItsCentre) {
+  const Real r = 0.3;
+  for (int sides = 5; sides <= 16; ++sides) {
+    const Hull hull = convex_hull(prism_points(sides, r, 0.5));
+    const Real apothem = r * std::cos(std::numbers::pi / sides);
+    int ends = 0;
+    for (const HullFace& face : hull.faces) {
+      if (face.count <= 4) continue;
+      ++ends;
+      const Vec3 centre = face.normal * face.offset;  // a prism's end: its centre is on the axis
+      for (int q = 0; q < 4; ++q) {
+        const Vec3& p = face.quad[q];
+        const Vec3& next = face.quad[(q + 1) % 4];
+        EXPECT_NEAR(face.normal.dot(p), face.offset, 1e-12);
+        // On a side of the polygon: as far from the axis as the side's line there.
+        Vec3 in_plane = p - centre;
+        const Real angle = std::atan2(in_plane.z(), in_plane.x());
+        const Real side_angle = std::floor(angle / (2 * std::numbers::pi / sides)) * (2 * std::numbers::pi / sides) + std::numbers::pi / sides;
+        EXPECT_NEAR(in_plane.x() * std::cos(side_angle) + in_plane.z() * std::sin(side_angle), apothem, 1e-9) << sides;
+        // Counter-clockwise seen from outside, and the centre more than half the apothem inside each side.
+        const Vec3 inward = face.normal.cross(next - p).normalized();
+        EXPECT_GT(inward.dot(centre - p), apothem / 2) << sides;
+      }
+    }
+    EXPECT_EQ(ends, 2) << sides;
+  }
+}
+
 TEST(Hull, PointsThatSpanNoSolidAreRefusedWithTheReason) {
   auto reason = [](const std::vector<Vec3>& points) {
     try {
@@ -145,6 +173,33 @@ TEST(CollideHull, ACubeHullOnTheGroundTouchesAtItsFourLowerCorners) {
     EXPECT_NEAR(c.separation, -0.001, 1e-12);
     EXPECT_LT((c.normal - Vec3::UnitY()).norm(), 1e-12);
   }
+}
+
+TEST(CollideHull, APentagonalPrismStandingOnTheGroundTouchesAtItsEndsQuad) {
+  const PlacedHull pentagonal = place_hull(prism_points(5, 0.3, 0.4), false);
+  const Hull& hull = *pentagonal.hull;
+  const Body prism = placed(Shape::convex(pentagonal.hull), Vec3(0, 0.2 - 0.001, 0));
+  const auto out = contacts(prism, kGround);
+  ASSERT_EQ(out.size(), 4u);
+  Vec3 mean = Vec3::Zero();
+  for (const Contact& c : out) {
+    EXPECT_NEAR(c.separation, -0.001, 1e-12);
+    mean += c.point / 4;
+    bool on_quad = false;
+    for (const HullFace& face : hull.faces)
+      if (face.count > 4 && face.normal.y() < 0)
+        for (const Vec3& q : face.quad) on_quad = on_quad || (q + prism.position - c.point).norm() < 0.0006;
+    EXPECT_TRUE(on_quad);
+  }
+  // Tipped 10 degrees about x: its lowest corner alone, deeper than the quad.
+  const Body tipped = placed(hull_of(prism_points(5, 0.3, 0.4)), Vec3(0, 0.2, 0), about(Vec3::UnitX(), 10));
+  const Real lowest = reach_along(tipped.shape, tipped.orientation, -Vec3::UnitY());
+  const Body tipped_in = placed(tipped.shape, Vec3(0, lowest - 0.001, 0), tipped.orientation);
+  const auto corner = contacts(tipped_in, kGround);
+  ASSERT_GE(corner.size(), 1u);
+  Real deepest = 0;
+  for (const Contact& c : corner) deepest = std::min(deepest, c.separation);
+  EXPECT_NEAR(deepest, -0.001, 1e-12);
 }
 
 TEST(CollideHull, ATetrahedronOnItsApexTouchesTheGroundThere) {

@@ -215,6 +215,94 @@ std::string round_stack(Draw& draw) {
   return scene.str();
 }
 
+// A convex hull's fields: a wedge, a regular tetrahedron, a prism of 3 to 8 sides, or the hull of
+// 5 to 12 points drawn in a box; `reach`, its farthest point from the points' origin.
+std::string any_hull_fields(Draw& draw, double& reach) {
+  const int kind = draw.integer(0, 3);
+  if (kind == 0) {
+    const Vec3 size = draw.vector(0.1, 0.8);
+    reach = size.norm() / 2;
+    return "shape = \"wedge\"\nsize = " + SceneText::vector(size);
+  }
+  if (kind == 1) {
+    const double edge = draw.uniform(0.15, 0.8);
+    reach = edge * std::sqrt(6.0) / 4;  // the circumradius
+    return "shape = \"tetrahedron\"\nsize = " + SceneText::number(edge);
+  }
+  if (kind == 2) {
+    const int sides = draw.integer(3, 8);
+    const double radius = draw.uniform(0.08, 0.4);
+    const double height = draw.uniform(0.05, 0.8);
+    reach = std::hypot(radius, height / 2);
+    return "shape = \"prism\"\nsides = " + std::to_string(sides) + "\nradius = " + SceneText::number(radius) +
+           "\nheight = " + SceneText::number(height);
+  }
+  const int count = draw.integer(5, 12);
+  const Vec3 half = draw.vector(0.05, 0.4);
+  std::string points = "shape = \"hull\"\npoints = [";
+  reach = 0;
+  for (int i = 0; i < count; ++i) {
+    const Vec3 p = draw.vector(-half, half);
+    reach = std::max(reach, p.norm());
+    points += (i ? ", " : "") + SceneText::vector(p);
+  }
+  return points + "]";
+}
+
+// Hulls among every other shape: each body a hull or any_shape's.
+void any_shape_or_hull(Draw& draw, SceneText& scene, Placement& placement, bool free) {
+  if (!draw.coin()) return any_shape(draw, scene, placement, free);
+  const double restitution = draw.uniform(0, 1), friction = draw.uniform(0, 1), mass = draw.uniform(0.2, 5);
+  double reach = 0;
+  const std::string fields = any_hull_fields(draw, reach);
+  const Vec3 at = placement.place(reach);
+  const Vec3 velocity = free ? toward_middle(draw, at) : vector_of_length(draw, 0, 3);
+  const Vec3 spin = vector_of_length(draw, 0, 6), turned = draw.vector(0, 90);
+  scene.shaped(fields, at, mass, velocity, spin, turned, restitution, friction);
+}
+
+std::string free_hull_collisions(Draw& draw) {
+  SceneText scene("free collisions of hulls and every shape", 3.0);
+  scene.line("[world]\ngravity = [0, 0, 0]");
+  Placement placement(draw, Vec3(-2, -2, -2), Vec3(2, 2, 2));
+  const int count = draw.integer(2, 8);
+  for (int i = 0; i < count; ++i) any_shape_or_hull(draw, scene, placement, true);
+  return scene.str();
+}
+
+std::string hull_drops(Draw& draw) {
+  SceneText scene("drops of hulls and every shape", 4.0);
+  scene.line("[world]\nsleeping = " + std::string(draw.coin() ? "true" : "false"));
+  const double ground_restitution = draw.uniform(0, 1), ground_friction = draw.uniform(0, 1);
+  scene.line("[[body]]\nshape = \"plane\"\nnormal = [0, 1, 0]\noffset = 0\nrestitution = " + SceneText::number(ground_restitution) +
+             "\nfriction = " + SceneText::number(ground_friction));
+  Placement placement(draw, Vec3(-3, 1.0, -3), Vec3(3, 4, 3));
+  const int count = draw.integer(1, 10);
+  for (int i = 0; i < count; ++i) any_shape_or_hull(draw, scene, placement, false);
+  return scene.str();
+}
+
+// A stack of 2 to 6 prisms of 3 to 8 sides standing on their ends, each of its own size and mass
+// and turned about the vertical at random, on the ground, sleeping off.
+std::string hull_stack(Draw& draw) {
+  SceneText scene("a stack of prisms", 5.0);
+  scene.line("[world]\nsleeping = false");
+  scene.line("[[body]]\nshape = \"plane\"\nnormal = [0, 1, 0]\noffset = 0");
+  const int count = draw.integer(2, 6);
+  const double friction = draw.uniform(0.4, 1);
+  double y = 0;
+  for (int i = 0; i < count; ++i) {
+    const int sides = draw.integer(3, 8);
+    const double radius = draw.uniform(0.15, 0.4), height = draw.uniform(0.1, 0.6), mass = draw.uniform(0.5, 5);
+    const double turn = draw.uniform(0, 90);
+    scene.shaped("shape = \"prism\"\nsides = " + std::to_string(sides) + "\nradius = " + SceneText::number(radius) +
+                     "\nheight = " + SceneText::number(height),
+                 Vec3(0, y + height / 2, 0), mass, Vec3::Zero(), Vec3::Zero(), Vec3(0, turn, 0), 0, friction);
+    y += height;
+  }
+  return scene.str();
+}
+
 // A pyramid of boxes (2 to 8 rows) of any size, mass and friction from 0.4, built as the
 // benchmark builds it (rows touching), sleeping off.
 std::string pyramid(Draw& draw) {
@@ -229,6 +317,17 @@ std::string pyramid(Draw& draw) {
 }
 
 }  // namespace
+
+// No body but the first (the ground) moves farther than `most` from where it started.
+Law stays_within(double most) {
+  return [most](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>& initial) {
+    for (size_t i = 1; i < initial.size(); ++i) {
+      const double moved = (world.bodies()[i].position - initial[i].position).norm();
+      if (moved > most) return breach_text(("body " + std::to_string(i) + " moved").c_str(), moved, most);
+    }
+    return std::string();
+  };
+}
 
 // With gravity: kinetic plus potential energy never rises above its start (by more than 1 %).
 Law energy_never_rises() {
@@ -373,16 +472,22 @@ TEST(GeneratedLaws, EveryPairOfShapesKeepsMomentaAndNeverGainsEnergy) {
   check_law("round-drops", 40, round_drops, energy_never_rises());
 }
 
+// The same with convex hulls (wedges, tetrahedra, prisms, the hulls of random points) among them.
+TEST(GeneratedLaws, HullsAmongEveryShapeKeepMomentaAndNeverGainEnergy) {
+  check_law("free-hull-collisions", 40, free_hull_collisions, momenta_law([](double energy, double start_energy) {
+              return energy > start_energy * 1.01 ? breach_text("kinetic energy", energy, start_energy * 1.01) : std::string();
+            }));
+  check_law("hull-drops", 40, hull_drops, energy_never_rises());
+}
+
+// Stacks of prisms stand: no body moves more than 1 cm in 5 s.
+TEST(GeneratedLaws, StacksOfPrismsHold) {
+  check_law("hull-stack", 20, hull_stack, stays_within(0.01));
+}
+
 // Stacks of cylinders and of crossed capsules stand: no body moves more than 1 cm in 5 s.
 TEST(GeneratedLaws, StacksOfCylindersAndCapsulesHold) {
-  check_law("round-stack", 20, round_stack,
-            [](const physics::World& world, const physics::StepRecord&, const std::vector<physics::Body>& initial) {
-              for (size_t i = 1; i < initial.size(); ++i) {
-                const double moved = (world.bodies()[i].position - initial[i].position).norm();
-                if (moved > 0.01) return breach_text(("body " + std::to_string(i) + " moved").c_str(), moved, 0.01);
-              }
-              return std::string();
-            });
+  check_law("round-stack", 20, round_stack, stays_within(0.01));
 }
 
 // A light box (0.27 kg) pinched between two heavy balls (2.5 and 2.9 kg), frictionless, in the
@@ -472,6 +577,9 @@ TEST(GeneratedLaws, ASeedIsTheSameSceneWhateverTheCompiler) {
   EXPECT_EQ(scenes_hash("free-round-collisions", free_round_collisions), 0x899ff0751a0244acull);
   EXPECT_EQ(scenes_hash("round-drops", round_drops), 0x3545382489a9e7cbull);
   EXPECT_EQ(scenes_hash("round-stack", round_stack), 0xeeb0c6b75f8bb92dull);
+  EXPECT_EQ(scenes_hash("free-hull-collisions", free_hull_collisions), 0x02cde50475c606b7ull);
+  EXPECT_EQ(scenes_hash("hull-drops", hull_drops), 0xc3cddb306df9bbf4ull);
+  EXPECT_EQ(scenes_hash("hull-stack", hull_stack), 0x4bc1d31a60fa22a7ull);
 }
 
 }  // namespace impulse::demos

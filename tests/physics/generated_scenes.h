@@ -87,6 +87,14 @@ class SceneText {
           << "\nangular_velocity = " << vector(angular_velocity) << "\nrotation = " << vector(rotation_degrees)
           << "\nrestitution = " << number(restitution) << "\nfriction = " << number(friction) << "\n";
   }
+  // A body of a shape written by the caller: its fields ("shape = \"wedge\"\nsize = [1, 0.5, 0.5]").
+  void shaped(const std::string& shape_fields, const Vec3& position, double mass, const Vec3& velocity,
+              const Vec3& angular_velocity, const Vec3& rotation_degrees, double restitution, double friction) {
+    text_ << "[[body]]\n" << shape_fields << "\nmass = " << number(mass) << "\nposition = " << vector(position)
+          << "\nvelocity = " << vector(velocity) << "\nangular_velocity = " << vector(angular_velocity)
+          << "\nrotation = " << vector(rotation_degrees) << "\nrestitution = " << number(restitution)
+          << "\nfriction = " << number(friction) << "\n";
+  }
   std::string str() const { return text_.str(); }
 
   // 17 significant digits: the file holds the generator's numbers exactly.
