@@ -188,13 +188,14 @@ std::vector<physics::Vec3> TableReader::points(std::string_view key, double max_
   std::vector<physics::Vec3> out;
   for (size_t i = 0; i < array->size(); ++i) {
     const toml::array* point = array->get(i)->as_array();
-    if (!point || point->size() != 3) fail(array->get(i), key, expected);
+    const std::string which = "point " + std::to_string(i + 1) + " must be three numbers [x, y, z] in metres";
+    if (!point || point->size() != 3) fail(array->get(i), key, which);
     physics::Vec3 v;
     for (int k = 0; k < 3; ++k) {
       const toml::node& item = *point->get(k);
       if (auto d = item.value_exact<double>()) v[k] = *d;
       else if (auto n = item.value_exact<int64_t>()) v[k] = physics::Real(*n);
-      else fail(array->get(i), key, expected);
+      else fail(array->get(i), key, which);
     }
     if (!physics::is_finite(v) || v.norm() > max_length)
       fail(array->get(i), key, "point " + std::to_string(i + 1) + " must be finite and at most " + std::to_string(int(max_length)) + " m from the body's origin");
