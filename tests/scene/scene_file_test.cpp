@@ -333,5 +333,44 @@ TEST(SceneFile, ALatticeIsNamedFromOneAroundTheMiddleOfItsBottomLayerAndMayBeSta
   EXPECT_EQ(scene_of("[[lattice]]\ncount = [1, 1, 1]\n").bodies[0].name, "lattice 1");
 }
 
+// A hull's points are about `position` in the body's frame turned by `rotation`: the body sits at
+// their hull's centre of mass, turned into its principal axes, and the corners land where the file
+// put them. A right wedge's centroid is a third of each leg from its right angle.
+TEST(SceneFile, AHullsBodyIsAtItsCentreOfMassAndItsCornersWhereTheFilePutThem) {
+  const Scene scene = load_scene(write_scene("hull", R"([[body]]
+name = "wedge"
+shape = "wedge"
+size = [0.9, 0.3, 0.5]
+position = [1, 2, 3]
+rotation = [0, 90, 0]
+
+[[body]]
+name = "die"
+shape = "hull"
+points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [0.2, 0.2, 0.2]]
+inertia = "hollow"
+)"));
+  ASSERT_EQ(scene.bodies.size(), 2u);
+  const physics::BodyDef& wedge = scene.bodies[0];
+  ASSERT_EQ(wedge.shape.type, physics::ShapeType::hull);
+  const physics::Quat turn = rotation_from_degrees(physics::Vec3(0, 90, 0));
+  EXPECT_LT((wedge.position - (physics::Vec3(1, 2, 3) + physics::rotate(turn, physics::Vec3(-0.15, -0.05, 0)))).norm(), 1e-12);
+  EXPECT_NEAR(physics::shape_volume(wedge.shape), 0.9 * 0.3 * 0.5 / 2, 1e-12);
+  for (const physics::Vec3& corner : wedge.shape.hull->corners) {
+    const physics::Vec3 in_file = physics::rotate(turn.conjugate(), wedge.position + physics::rotate(wedge.orientation, corner) - physics::Vec3(1, 2, 3));
+    EXPECT_NEAR(std::abs(in_file.x()), 0.45, 1e-12);
+    EXPECT_NEAR(std::abs(in_file.y()), 0.15, 1e-12);
+    EXPECT_NEAR(std::abs(in_file.z()), 0.25, 1e-12);
+  }
+  // The corner of the unit tetrahedron and the point inside it: four corners, and, hollow, the body at
+  // the surface's centre: three right triangles of area 1/2 (centres at thirds) and one of area
+  // sqrt(3)/2 (its centre at (1/3, 1/3, 1/3)).
+  const physics::BodyDef& die = scene.bodies[1];
+  EXPECT_EQ(die.shape.hull->corners.size(), 4u);
+  const double right = 0.5, slanted = std::sqrt(3.0) / 2;
+  const double each = (2 * right * (1.0 / 3) + slanted * (1.0 / 3)) / (3 * right + slanted);
+  EXPECT_LT((die.position - physics::Vec3::Constant(each)).norm(), 1e-12);
+}
+
 }  // namespace
 }  // namespace impulse::demos
