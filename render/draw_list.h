@@ -3,6 +3,7 @@
 #pragma once
 #include <Eigen/Geometry>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace impulse::render {
@@ -42,6 +43,20 @@ struct CylinderItem {
   bool spin_marks = true;
   bool sleeping = false;
 };
+// A polyhedron (a convex hull, or any closed mesh), drawn flat: one shade a triangle, the sides of
+// its faces outlined as a box's edges. `triangles` holds its corners in its own frame (about
+// `centre`, turned by `orientation`), three a triangle, counter-clockwise seen from outside;
+// neighbouring triangles in one plane make one face, with no line between them. It is shared, not
+// copied: the renderer uploads one GPU mesh per distinct vector, keyed by its address and holding
+// it while the mesh is kept (so the address cannot come to name other corners), so every item and
+// frame that shares one vector costs one upload.
+struct MeshItem {
+  Vec3f centre;
+  Quatf orientation = Quatf::Identity();
+  std::shared_ptr<const std::vector<Vec3f>> triangles;
+  Colour colour;
+  bool sleeping = false;
+};
 // An arrow from `origin` along `direction` (its length is the arrow's length in metres).
 // Arrows and points are drawn in flat colours, and faintly where a body hides them. Where arrows
 // overlap (e.g. a velocity and an impulse along one line), the higher `layer` is drawn on top.
@@ -70,6 +85,7 @@ struct DrawList {
   std::vector<SphereItem> spheres;
   std::vector<BoxItem> boxes;
   std::vector<CylinderItem> cylinders;
+  std::vector<MeshItem> meshes;
   std::vector<ArrowItem> arrows;
   std::vector<PointItem> points;
   std::vector<LineItem> lines;

@@ -30,6 +30,7 @@ GpuMesh::GpuMesh(const MeshData& mesh) : index_count_(static_cast<GLsizei>(mesh.
   glBindVertexBuffer(kVertexBinding, vertex_buffer_.id(), 0, sizeof(MeshVertex));
   float_attribute(0, 3, offsetof(MeshVertex, position), kVertexBinding);
   float_attribute(1, 3, offsetof(MeshVertex, normal), kVertexBinding);
+  float_attribute(11, 3, offsetof(MeshVertex, outline), kVertexBinding);
 
   glBindBuffer(GL_ARRAY_BUFFER, instance_buffer_.id());
   glBufferData(GL_ARRAY_BUFFER, sizeof(Instance), nullptr, GL_STREAM_DRAW);  // makes the name a buffer

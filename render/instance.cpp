@@ -43,6 +43,10 @@ Instance cylinder_instance(const CylinderItem& cylinder) {
   return make_instance(cylinder.centre, cylinder.orientation, scale, cylinder.colour, style);
 }
 
+Instance mesh_instance(const MeshItem& mesh) {
+  return make_instance(mesh.centre, mesh.orientation, Vec3f::Ones(), mesh.colour, edges | (mesh.sleeping ? sleeping : plain));
+}
+
 Instance point_instance(const Vec3f& position, float radius, const Colour& colour) {
   return make_instance(position, Quatf::Identity(), Vec3f::Constant(radius), colour, plain);
 }

@@ -1,6 +1,6 @@
 // Per-instance data the mesh programs read (vertex attributes 2..10, see shaders.h), and how
-// spheres, boxes, cylinders and points become instances of the unit meshes in mesh.h (or impostor
-// quads).
+// spheres, boxes, cylinders, flat meshes and points become instances of the meshes in mesh.h (or
+// impostor quads).
 #pragma once
 #include <vector>
 
@@ -25,6 +25,8 @@ Instance box_instance(const BoxItem& box);           // of make_cube
 // would draw lines where x or z is +-1. `spin_marks` takes the sphere's octants of the unit
 // cylinder's coordinates: x and z scale alike, so its sectors are a ball's of the same frame.
 Instance cylinder_instance(const CylinderItem& cylinder);
+// Of its own make_flat_mesh, unscaled: `edges` draws its faces' sides from the mesh's outline values.
+Instance mesh_instance(const MeshItem& mesh);
 Instance point_instance(const Vec3f& position, float radius, const Colour& colour);  // a plain sphere
 
 }  // namespace impulse::render

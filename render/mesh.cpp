@@ -1,7 +1,8 @@
 #include "render/mesh.h"
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -12,8 +13,10 @@ namespace {
 
 using Vec3 = Eigen::Vector3f;
 
-uint32_t add_vertex(MeshData& mesh, const Vec3& position, const Vec3& normal) {
-  mesh.vertices.push_back({{position.x(), position.y(), position.z()}, {normal.x(), normal.y(), normal.z()}});
+uint32_t add_vertex(MeshData& mesh, const Vec3& position, const Vec3& normal, const Vec3& outline = Vec3::Ones()) {
+  mesh.vertices.push_back({{position.x(), position.y(), position.z()},
+                           {normal.x(), normal.y(), normal.z()},
+                           {outline.x(), outline.y(), outline.z()}});
   return static_cast<uint32_t>(mesh.vertices.size() - 1);
 }
 
@@ -123,6 +126,48 @@ MeshData make_quad() {
   add_vertex(mesh, Vec3(1.0f, 0.0f, -1.0f), up);
   add_triangle(mesh, 0, 1, 2);
   add_triangle(mesh, 0, 2, 3);
+  return mesh;
+}
+
+MeshData make_flat_mesh(const std::vector<Vec3>& corners) {
+  // Triangles meeting at less than this (cosine of 0.25 degrees) are one face: a fan across a flat
+  // polygon rounds its normals apart by far less, a polyhedron's faces meet at far more.
+  constexpr float kSamePlane = 0.99999f;
+  const size_t count = corners.size() / 3;
+  std::vector<Vec3> normals(count, Vec3::Zero());
+  for (size_t t = 0; t < count; ++t) {
+    const Vec3& a = corners[3 * t];
+    const Vec3 facing = (corners[3 * t + 1] - a).cross(corners[3 * t + 2] - a);
+    if (facing.norm() > 0.0f) normals[t] = facing.normalized();  // a NaN corner fails too
+  }
+  // Each triangle's sides as they run round it, (from, to): the neighbour across a side has it as
+  // (to, from).
+  using Side = std::array<float, 6>;
+  auto side = [&](size_t from, size_t to) {
+    const Vec3 &p = corners[from], &q = corners[to];
+    return Side{p.x(), p.y(), p.z(), q.x(), q.y(), q.z()};
+  };
+  std::map<Side, size_t> triangle_of;
+  for (size_t t = 0; t < count; ++t)
+    for (size_t k = 0; k < 3; ++k) triangle_of.emplace(side(3 * t + k, 3 * t + (k + 1) % 3), t);
+
+  MeshData mesh;
+  mesh.vertices.reserve(corners.size());
+  mesh.indices.reserve(corners.size());
+  for (size_t t = 0; t < count; ++t) {
+    if (normals[t].isZero()) continue;
+    Vec3 outlines = Vec3::Zero();  // 1 where the side across from that corner outlines nothing
+    for (size_t k = 0; k < 3; ++k) {
+      const auto across = triangle_of.find(side(3 * t + (k + 2) % 3, 3 * t + (k + 1) % 3));
+      const bool same_face = across != triangle_of.end() && normals[across->second].dot(normals[t]) > kSamePlane;
+      outlines[Eigen::Index(k)] = same_face ? 1.0f : 0.0f;
+    }
+    for (size_t k = 0; k < 3; ++k) {
+      Vec3 outline = outlines;  // a barycentric coordinate where a side outlines, 1 elsewhere
+      outline[Eigen::Index(k)] = 1.0f;
+      mesh.indices.push_back(add_vertex(mesh, corners[3 * t + k], normals[t], outline));
+    }
+  }
   return mesh;
 }
 

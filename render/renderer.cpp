@@ -4,8 +4,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <stdexcept>
+#include <unordered_map>
 #include <vector>
 
 #include "render/camera_view.h"
@@ -33,8 +35,12 @@ const Vec3f kGroundColour(0.84f, 0.85f, 0.86f);
 
 // Which mesh the lit program draws (u_mesh) and which caster the ground shadow's (u_caster), as
 // shaders.cpp numbers them: each has its own outlines.
-enum class LitMesh { box = 0, sphere = 1, cylinder = 2 };
-enum class ShadowCaster { box = 0, disc = 1, cylinder = 2 };
+enum class LitMesh { box = 0, sphere = 1, cylinder = 2, face = 3 };
+enum class ShadowCaster { box = 0, disc = 1, cylinder = 2, face = 3 };
+
+// A flat mesh's GPU copy is kept while some draw among the last this many drew it: a film's panes
+// share one renderer, and a body may leave the view for a while.
+constexpr uint64_t kMeshDrawsKept = 64;
 
 Vec3f to_vector(const Colour& colour) { return {colour.r, colour.g, colour.b}; }
 
@@ -88,6 +94,16 @@ std::array<GpuMesh, N> make_sphere_levels() {
   }(std::make_index_sequence<N>{});
 }
 
+// The GPU copy of one MeshItem::triangles, and this draw's items of it.
+struct KeptMesh {
+  explicit KeptMesh(std::shared_ptr<const std::vector<Vec3f>> corners)
+      : triangles(std::move(corners)), mesh(make_flat_mesh(*triangles)) {}
+  std::shared_ptr<const std::vector<Vec3f>> triangles;  // held: its address is the key
+  GpuMesh mesh;
+  std::vector<Instance> instances;
+  uint64_t last_draw = 0;
+};
+
 }  // namespace
 
 struct Renderer::Gpu {
@@ -114,6 +130,9 @@ struct Renderer::Gpu {
   GpuMesh sphere_quads{make_quad()};
   GpuMesh point_quads{make_quad()};
   GpuMesh ground_mesh{make_quad()};
+  std::unordered_map<const std::vector<Vec3f>*, KeptMesh> meshes;  // by MeshItem::triangles
+  std::vector<KeptMesh*> meshes_drawn;  // this draw's, in the draw list's order: the same bytes every run
+  uint64_t draws = 0;
   OffscreenTarget target;
   std::optional<ShadowMap> shadow_map;
   // Sky and ground depend only on the camera and the light unless the shadow map falls on the
@@ -154,6 +173,9 @@ struct Renderer::Gpu {
   }
 
   void collect(const DrawList& draw_list, const CameraView& camera, const Vec3f& towards_light);
+  void draw_meshes() const {
+    for (const KeptMesh* kept : meshes_drawn) kept->mesh.draw();
+  }
   void draw_shadows(const ShadowFrustum& shadow, const Vec3f& towards_light);
   void draw_bodies();
   void draw_marks();  // arrows and points
@@ -184,6 +206,17 @@ void Renderer::Gpu::collect(const DrawList& draw_list, const CameraView& camera,
   }
   for (const BoxItem& box : draw_list.boxes) boxes.push_back(box_instance(box));
   for (const CylinderItem& cylinder : draw_list.cylinders) cylinders.push_back(cylinder_instance(cylinder));
+  ++draws;
+  meshes_drawn.clear();
+  for (auto& [corners, kept] : meshes) kept.instances.clear();
+  for (const MeshItem& mesh : draw_list.meshes) {
+    if (!mesh.triangles || mesh.triangles->size() < 3) continue;
+    KeptMesh& kept = meshes.try_emplace(mesh.triangles.get(), mesh.triangles).first->second;
+    if (kept.instances.empty()) meshes_drawn.push_back(&kept);
+    kept.instances.push_back(mesh_instance(mesh));
+    kept.last_draw = draws;
+  }
+  std::erase_if(meshes, [&](const auto& entry) { return draws - entry.second.last_draw >= kMeshDrawsKept; });
   for (const LineItem& line : draw_list.lines) append_flat_line(line, camera, arrows);
   for (const ArrowItem& arrow : draw_list.arrows) append_flat_arrow(arrow, camera, arrows);
   for (const PointItem& point : draw_list.points) {
@@ -196,12 +229,14 @@ void Renderer::Gpu::collect(const DrawList& draw_list, const CameraView& camera,
   for (int level = 0; level <= kMaxSphereLevel; ++level) sphere_levels[level].upload(spheres_by_level[level]);
   cube_mesh.upload(boxes);
   cylinder_mesh.upload(cylinders);
+  for (KeptMesh* kept : meshes_drawn) kept->mesh.upload(kept->instances);
   arrow_mesh.upload(arrows);
   point_quads.upload(points);
   shadow_discs.upload(discs);
 }
 
-// Depth of spheres (always ray-cast: exact and cheap), boxes and cylinders as the light sees them.
+// Depth of spheres (always ray-cast: exact and cheap), boxes, cylinders and meshes as the light
+// sees them.
 void Renderer::Gpu::draw_shadows(const ShadowFrustum& shadow, const Vec3f& towards_light) {
   shadow_map->bind_for_drawing();
   glDisable(GL_CULL_FACE);
@@ -211,6 +246,7 @@ void Renderer::Gpu::draw_shadows(const ShadowFrustum& shadow, const Vec3f& towar
   depth_only.set("u_view_projection", shadow.view_projection);
   cube_mesh.draw();
   cylinder_mesh.draw();
+  draw_meshes();
   glDisable(GL_POLYGON_OFFSET_FILL);
   impostor_shadow.use();
   impostor_shadow.set("u_view_projection", shadow.view_projection);
@@ -228,6 +264,8 @@ void Renderer::Gpu::draw_bodies() {
   cube_mesh.draw();
   lit.set("u_mesh", int(LitMesh::cylinder));
   cylinder_mesh.draw();
+  lit.set("u_mesh", int(LitMesh::face));
+  draw_meshes();
   if (settings.spheres == SphereMethod::tessellated) {
     lit.set("u_mesh", int(LitMesh::sphere));
     for (const GpuMesh& level : sphere_levels) level.draw();
@@ -322,6 +360,8 @@ void Renderer::Gpu::draw_ground_shadows(const DrawList& draw_list) {
   cube_mesh.draw();
   ground_shadow.set("u_caster", int(ShadowCaster::cylinder));
   cylinder_mesh.draw();
+  ground_shadow.set("u_caster", int(ShadowCaster::face));
+  draw_meshes();
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDepthMask(GL_TRUE);
 }

@@ -1,6 +1,6 @@
 // Draws a DrawList into an RGBA Frame with OpenGL 4.5 core on an offscreen OSMesa context:
-// shadowed, lit spheres, boxes, cylinders, arrows and points over a gridded ground plane,
-// anti-aliased.
+// shadowed, lit spheres, boxes, cylinders, flat meshes, arrows and points over a gridded ground
+// plane, anti-aliased.
 // Each Renderer owns its own GL context; use it from one thread at a time.
 #pragma once
 #include <memory>

@@ -63,7 +63,7 @@ uniform float u_alpha;
 uniform float u_ambient_lift;  // arrows and points: flat, uniform colour
 
 const int kStyleSpinMarks = 1;  // sphere, cylinder: alternate octants darker so rotation is visible
-const int kStyleEdges = 2;      // box: thin dark outline along the edges
+const int kStyleEdges = 2;      // box, flat mesh: thin dark outline along its faces' sides
 const int kStyleSleeping = 4;   // pale and hatched: asleep, whatever the viewer's colour vision
 
 float octant_shade(vec3 p) {
@@ -73,14 +73,23 @@ float octant_shade(vec3 p) {
   return mix(1.0, 0.74, mix(0.5, dark, blend));
 }
 
-float edge_shade(vec3 p) {
+// Pixels from `p`, on a face of the unit cube, to that face's nearest side.
+float box_pixels_to_edge(vec3 p) {
   vec3 pixels_to_edge = (1.0 - abs(p)) / max(fwidth(p), vec3(1e-6));
   // The smallest distance belongs to the face we are on; the next one is to the nearest edge.
   float smallest = min(min(pixels_to_edge.x, pixels_to_edge.y), pixels_to_edge.z);
   float largest = max(max(pixels_to_edge.x, pixels_to_edge.y), pixels_to_edge.z);
-  float to_edge = pixels_to_edge.x + pixels_to_edge.y + pixels_to_edge.z - smallest - largest;
-  return mix(0.55, 1.0, smoothstep(0.6, 1.6, to_edge));
+  return pixels_to_edge.x + pixels_to_edge.y + pixels_to_edge.z - smallest - largest;
 }
+
+// Pixels to the nearest side of a flat mesh's face, from its triangle's outline values (mesh.h's
+// MeshVertex::outline: 0 on a side, affine across; a constant 1, no side, is a million pixels away).
+float face_pixels_to_edge(vec3 outline) {
+  vec3 pixels_to_edge = outline / max(fwidth(outline), vec3(1e-6));
+  return min(min(pixels_to_edge.x, pixels_to_edge.y), pixels_to_edge.z);
+}
+
+float edge_shade(float pixels_to_edge) { return mix(0.55, 1.0, smoothstep(0.6, 1.6, pixels_to_edge)); }
 
 // Diagonal stripes in screen space, 8 pixels apart.
 float hatch_shade() {
@@ -88,7 +97,9 @@ float hatch_shade() {
   return mix(1.0, 0.8, smoothstep(0.5, 1.5, stripe) * (1.0 - smoothstep(2.5, 3.5, stripe)));
 }
 
-vec4 surface_colour(vec3 srgb, int style, vec3 local, vec3 world, vec3 normal) {
+// `pixels_to_edge`: with kStyleEdges, how far the nearest side of the face is (box_pixels_to_edge,
+// face_pixels_to_edge).
+vec4 surface_colour(vec3 srgb, int style, vec3 local, float pixels_to_edge, vec3 world, vec3 normal) {
   vec3 albedo = to_linear(srgb);
   float specular = 0.35;
   if ((style & kStyleSleeping) != 0) {
@@ -97,7 +108,7 @@ vec4 surface_colour(vec3 srgb, int style, vec3 local, vec3 world, vec3 normal) {
     specular = 0.0;
   }
   if ((style & kStyleSpinMarks) != 0) albedo *= octant_shade(local);
-  if ((style & kStyleEdges) != 0) albedo *= edge_shade(local);
+  if ((style & kStyleEdges) != 0) albedo *= edge_shade(pixels_to_edge);
   if ((style & kStyleSleeping) != 0) albedo *= hatch_shade();
   vec3 lit = shade(albedo, world, normal, specular);
   lit = mix(lit, albedo, u_ambient_lift);
@@ -157,6 +168,11 @@ vec4 with_cylinder_edges(vec4 edges, vec3 local, vec3 local_normal, float side_i
   vec4 side = with_edge(with_edge(with_edge(edges, side_inside), 1.0 - local.y), 1.0 + local.y);
   return abs(local_normal.y) > 0.5 ? cap : side;
 }
+// A triangle of make_flat_mesh: those of its sides that outline its face (MeshVertex::outline; a
+// side inside the face has a constant 1, no gradient, so no outline).
+vec4 with_face_edges(vec4 edges, vec3 outline) {
+  return with_edge(with_edge(with_edge(edges, outline.x), outline.y), outline.z);
+}
 )";
 
 std::string defines(bool shadow_map, bool edges) {
@@ -173,6 +189,7 @@ layout(location = 2) in mat4 in_model;
 layout(location = 6) in mat3 in_normal_matrix;
 layout(location = 9) in vec3 in_colour;
 layout(location = 10) in float in_style;
+layout(location = 11) in vec3 in_outline;
 
 uniform mat4 u_view_projection;
 
@@ -180,6 +197,7 @@ out vec3 v_world;
 out vec3 v_normal;
 out vec3 v_local;
 out vec3 v_local_normal;
+out vec3 v_outline;
 flat out vec4 v_sphere;  // centre and radius, for an icosphere or a cylinder
 flat out vec3 v_axis;    // a cylinder's, unit
 flat out vec3 v_colour;
@@ -193,6 +211,7 @@ void main() {
   v_normal = in_normal_matrix * in_normal;
   v_local = in_position;
   v_local_normal = in_normal;
+  v_outline = in_outline;
   v_colour = in_colour;
   v_style = int(in_style + 0.5);
   gl_Position = u_view_projection * world;
@@ -206,16 +225,19 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_local;
 in vec3 v_local_normal;
+in vec3 v_outline;
 flat in vec4 v_sphere;
 flat in vec3 v_axis;
 flat in vec3 v_colour;
 flat in int v_style;
 
 // The mesh drawn, for its outlines: boxes (their faces' sides), icospheres and cylinders (the true
-// sphere's or side's outline, as an impostor's, and a cylinder's rims).
+// sphere's or side's outline, as an impostor's, and a cylinder's rims), flat meshes (their faces'
+// sides, from v_outline).
 const int kBoxMesh = 0;
 const int kSphereMesh = 1;
 const int kCylinderMesh = 2;
+const int kFaceMesh = 3;
 uniform int u_mesh;
 
 out vec4 out_colour;
@@ -233,11 +255,16 @@ void main() {
   } else if (u_mesh == kCylinderMesh) {
     float inside = cylinder_inside(u_camera_position, ray, v_sphere.xyz, v_axis, v_sphere.w);
     edges = with_cylinder_edges(kNoEdges, v_local, v_local_normal, inside);
+  } else if (u_mesh == kFaceMesh) {
+    edges = with_face_edges(kNoEdges, v_outline);
   } else {  // kBoxMesh
     edges = with_box_face_edges(kNoEdges, v_local, v_local_normal);
   }
   write_edges(edges);
-  out_colour = surface_colour(v_colour, v_style, v_local, v_world, normal);
+  float pixels_to_edge = 0.0;
+  if ((v_style & kStyleEdges) != 0)
+    pixels_to_edge = u_mesh == kFaceMesh ? face_pixels_to_edge(v_outline) : box_pixels_to_edge(v_local);
+  out_colour = surface_colour(v_colour, v_style, v_local, pixels_to_edge, v_world, normal);
 }
 )";
 }
@@ -345,7 +372,8 @@ void main() {
   vec4 clip = u_view_projection * vec4(hit, 1.0);
   gl_FragDepth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
   write_edges(edges);
-  out_colour = surface_colour(v_colour, v_style, mat3(v_to_local_0, v_to_local_1, v_to_local_2) * (hit - v_centre), hit, normal);
+  vec3 local = mat3(v_to_local_0, v_to_local_1, v_to_local_2) * (hit - v_centre);
+  out_colour = surface_colour(v_colour, v_style, local, 0.0, hit, normal);  // 0.0: never kStyleEdges
 }
 )";
 }
@@ -423,12 +451,14 @@ float grid_line(vec2 coord, float spacing) {
 in vec2 v_disc;
 in vec3 v_local;         // a box's or cylinder's shadow: the unit mesh's coordinates and face normal
 in vec3 v_local_normal;
+in vec3 v_outline;       // a flat mesh's (MeshVertex::outline)
 flat in vec3 v_centre;   // a cylinder's
 flat in vec3 v_axis;
 flat in float v_radius;
 const int kBoxCaster = 0;
 const int kDiscCaster = 1;      // keep the samples inside the disc of the quad
 const int kCylinderCaster = 2;
+const int kFaceCaster = 3;      // a flat mesh
 uniform int u_caster;
 uniform vec2 u_sample_offsets[16];  // multisample positions relative to the pixel centre
 uniform int u_sample_count;
@@ -444,6 +474,8 @@ void main() {
     // grazes the cylinder.
     vec3 slide = vec3(u_light_direction.x, max(u_light_direction.y, 0.05), u_light_direction.z);
     edges = with_cylinder_edges(kNoEdges, v_local, v_local_normal, cylinder_inside(v_world, slide, v_centre, v_axis, v_radius));
+  } else if (u_caster == kFaceCaster) {
+    edges = with_face_edges(kNoEdges, v_outline);  // slid along the light, the values stay affine
   } else {  // kBoxCaster
     edges = with_box_face_edges(kNoEdges, v_local, v_local_normal);
   }
@@ -492,13 +524,14 @@ void main() {
 }
 
 // Shadows cast on the ground by geometry: each vertex slides along the light onto the plane
-// y = u_ground_height (a sphere's great disc, as the quad around it, or a box's or cylinder's own
-// vertices).
+// y = u_ground_height (a sphere's great disc, as the quad around it, or a box's, cylinder's or flat
+// mesh's own vertices).
 std::string ground_shadow_vertex() {
   return std::string(kVersion) + R"(
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in mat4 in_model;
+layout(location = 11) in vec3 in_outline;
 
 uniform mat4 u_view_projection;
 uniform vec3 u_light_direction;
@@ -508,6 +541,7 @@ out vec3 v_world;
 out vec2 v_disc;  // a disc's quad: the disc is where |v_disc| <= 1 (projection keeps this linear)
 out vec3 v_local;
 out vec3 v_local_normal;
+out vec3 v_outline;
 flat out vec3 v_centre;  // a cylinder's centre, unit axis and radius
 flat out vec3 v_axis;
 flat out float v_radius;
@@ -516,6 +550,7 @@ void main() {
   v_disc = in_position.xz;
   v_local = in_position;
   v_local_normal = in_normal;
+  v_outline = in_outline;
   v_centre = in_model[3].xyz;
   v_axis = normalize(in_model[1].xyz);
   v_radius = length(in_model[0].xyz);

@@ -24,6 +24,11 @@ ShadowFrustum fit_shadow_frustum(const DrawList& draw_list, const Eigen::Vector3
     bounds.extend(cylinder.centre - Vec3f::Constant(reach));
     bounds.extend(cylinder.centre + Vec3f::Constant(reach));
   }
+  for (const MeshItem& mesh : draw_list.meshes) {
+    if (!mesh.triangles) continue;
+    const Quatf turn = mesh.orientation.normalized();
+    for (const Vec3f& corner : *mesh.triangles) bounds.extend(mesh.centre + turn * corner);
+  }
   ShadowFrustum frustum;
   if (bounds.isEmpty() || !bounds.sizes().allFinite()) return frustum;
 

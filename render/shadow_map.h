@@ -13,7 +13,7 @@ struct ShadowFrustum {
   float texel_world = 0.0f;  // metres covered by one texel
 };
 
-// An orthographic light frustum around every sphere, box and cylinder (arrows cast no shadow),
+// An orthographic light frustum around every sphere, box, cylinder and mesh (arrows cast no shadow),
 // deep enough to reach the ground below them. `towards_light` is a unit vector.
 ShadowFrustum fit_shadow_frustum(const DrawList& draw_list, const Eigen::Vector3f& towards_light, int map_size);
 

@@ -1,9 +1,11 @@
 #include "demos/film/body_boxes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
+#include <span>
 
 namespace impulse::demos {
 namespace {
@@ -19,16 +21,25 @@ std::optional<render::ScreenBox> sphere_box(const physics::Vec3& centre, double 
   return render::ScreenBox{pixel->x() - reach, pixel->y() - reach, 2 * reach, 2 * reach};
 }
 
-std::optional<render::ScreenBox> box_box(const BodyPose& pose, const physics::Vec3& half, const render::CameraView& view) {
+// The box round `corners` (in the body's frame) where the pose puts them.
+std::optional<render::ScreenBox> corners_box(const BodyPose& pose, std::span<const physics::Vec3> corners,
+                                             const render::CameraView& view) {
+  if (corners.empty()) return std::nullopt;
   Eigen::Vector2f low = Eigen::Vector2f::Constant(1e30f), high = Eigen::Vector2f::Constant(-1e30f);
-  for (int corner = 0; corner < 8; ++corner) {
-    const physics::Vec3 point = pose.position + pose.orientation * physics::box_corner(half, corner);
+  for (const physics::Vec3& corner : corners) {
+    const physics::Vec3 point = pose.position + pose.orientation * corner;
     const auto pixel = view.to_pixels(point.cast<float>());
     if (!pixel) return std::nullopt;  // partly behind the camera: no box worth having
     low = low.cwiseMin(*pixel);
     high = high.cwiseMax(*pixel);
   }
   return render::ScreenBox{low.x(), low.y(), high.x() - low.x(), high.y() - low.y()};
+}
+
+std::optional<render::ScreenBox> box_box(const BodyPose& pose, const physics::Vec3& half, const render::CameraView& view) {
+  std::array<physics::Vec3, 8> corners;
+  for (int corner = 0; corner < 8; ++corner) corners[corner] = physics::box_corner(half, corner);
+  return corners_box(pose, corners, view);
 }
 
 // The box cut to a frame's size beyond each edge of the frame: a body close to the camera
@@ -57,6 +68,9 @@ void add_body_boxes(const std::vector<physics::Body>& bodies, const std::vector<
         break;
       case physics::ShapeType::capsule:
         box = box_box(poses[i], physics::Vec3(shape.radius, shape.half_height + shape.radius, shape.radius), view);
+        break;
+      case physics::ShapeType::hull:
+        if (shape.hull) box = corners_box(poses[i], shape.hull->corners, view);
         break;
       case physics::ShapeType::plane: break;
     }

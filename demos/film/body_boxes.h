@@ -1,8 +1,8 @@
 // Where each body of a scene is on screen, for the overlay's layout to go round (render::OverlayBody):
 // the box its projection covers, from a sphere's centre and radius at its depth, or the eight
-// corners of a box, or of the box in a cylinder's or capsule's frame that holds it. Planes (the
-// ground) are everywhere and have none; a body behind the camera or wholly outside the frame has
-// none.
+// corners of a box, or of the box in a cylinder's or capsule's frame that holds it, or a hull's
+// corners. Planes (the ground) are everywhere and have none; a body behind the camera or wholly
+// outside the frame has none.
 #pragma once
 #include "demos/film/scene_draw_list.h"
 #include "physics/body.h"

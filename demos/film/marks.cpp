@@ -47,6 +47,7 @@ double body_size(const physics::Shape& shape) {
     case physics::ShapeType::box: return shape.half_extents.minCoeff();
     case physics::ShapeType::capsule: return shape.radius;
     case physics::ShapeType::cylinder: return std::min(shape.radius, shape.half_height);
+    case physics::ShapeType::hull: return physics::thinnest_half_size(shape);
     case physics::ShapeType::plane: return INFINITY;
   }
   return INFINITY;

@@ -3,6 +3,10 @@
 #include "demos/film/render_types.h"
 
 #include <algorithm>
+#include <memory>
+#include <mutex>
+#include <unordered_map>
+#include <utility>
 
 namespace impulse::demos {
 namespace {
@@ -74,6 +78,32 @@ render::BoxItem plane_slab(const physics::Shape& plane, const render::Camera& ca
   return slab;
 }
 
+// A hull's faces as triangles (each face fanned from its first corner, so counter-clockwise seen
+// from outside as the face is), made once per hull and shared by every frame that draws it: the
+// renderer uploads one mesh per vector. Draw lists are made on any thread, several at once, hence
+// the lock; an entry whose hull is gone (its address perhaps now another's) is made again, and
+// such entries are dropped whenever one is added.
+std::shared_ptr<const std::vector<render::Vec3f>> hull_triangles(const std::shared_ptr<const physics::Hull>& hull) {
+  struct Made {
+    std::weak_ptr<const physics::Hull> hull;
+    std::shared_ptr<const std::vector<render::Vec3f>> triangles;
+  };
+  static std::mutex mutex;
+  static std::unordered_map<const physics::Hull*, Made> made;
+  const std::lock_guard lock(mutex);
+  if (const auto found = made.find(hull.get()); found != made.end() && found->second.hull.lock() == hull)
+    return found->second.triangles;
+
+  auto triangles = std::make_shared<std::vector<render::Vec3f>>();
+  for (const physics::HullFace& face : hull->faces)
+    for (int k = 1; k + 1 < face.count; ++k)
+      for (const int corner : {hull->corner_of(face, 0), hull->corner_of(face, k), hull->corner_of(face, k + 1)})
+        triangles->push_back(to_float(hull->corners[size_t(corner)]));
+  std::erase_if(made, [](const auto& entry) { return entry.second.hull.expired(); });
+  made[hull.get()] = {hull, triangles};
+  return triangles;
+}
+
 }  // namespace
 
 std::vector<BodyPose> poses_of(const std::vector<physics::Body>& bodies) {
@@ -139,6 +169,11 @@ render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::
           list.spheres.push_back({centre + side * end, radius, orientation, colour, true, sleeping});
         break;
       }
+      case physics::ShapeType::hull:
+        if (body.shape.hull)
+          list.meshes.push_back({to_float(pose.position), pose.orientation.cast<float>(), hull_triangles(body.shape.hull),
+                                 colour, sleeping});
+        break;
       case physics::ShapeType::plane:
         // The renderer draws one ground; a horizontal plane becomes it, any other a slab.
         if (body.shape.normal.y() > 0.999) {

@@ -1,14 +1,16 @@
 // A child process for RenderChildren (render_child_test.cpp): draws with every shader program the
-// renderer has (lit bodies, cylinders among them, sphere impostors and icospheres, flat arrows,
-// points, ground, ground shadows, the shadow map's depth passes), paints the overlay and encodes an
-// MP4, under whatever llvmpipe settings its environment holds. Exits 0 when every frame was drawn
-// and encoded, 1 with the reason on an error; a crash is the parent's to see.
+// renderer has (lit bodies, cylinders and a flat mesh among them, sphere impostors and icospheres,
+// flat arrows, points, ground, ground shadows, the shadow map's depth passes), paints the overlay
+// and encodes an MP4, under whatever llvmpipe settings its environment holds. Exits 0 when every
+// frame was drawn and encoded, 1 with the reason on an error; a crash is the parent's to see.
 //
 //   render_every_program OUTPUT_DIRECTORY
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "render/overlay_painter.h"
 #include "render/renderer.h"
@@ -45,6 +47,12 @@ const Variant kVariants[] = {
                                      .shadow_map_size = 512, .spheres = render::SphereMethod::tessellated}},
 };
 
+// A tetrahedron's four faces, counter-clockwise seen from outside.
+std::shared_ptr<const std::vector<render::Vec3f>> tetrahedron() {
+  const render::Vec3f a(0.4f, -0.2f, 0.0f), b(-0.2f, -0.2f, -0.35f), c(-0.2f, -0.2f, 0.35f), top(0.0f, 0.45f, 0.0f);
+  return std::make_shared<const std::vector<render::Vec3f>>(std::vector<render::Vec3f>{a, c, b, a, b, top, b, c, top, c, a, top});
+}
+
 // Each frame moves the camera, so the kept background is redrawn too.
 void draw_and_encode(const Variant& variant, const std::filesystem::path& directory) {
   render::Renderer renderer(kWidth, kHeight, variant.settings);
@@ -55,6 +63,7 @@ void draw_and_encode(const Variant& variant, const std::filesystem::path& direct
   for (int i = 0; i < kFrames; ++i) {
     render::DrawList list = testing::bodies_scene();
     list.cylinders.push_back({{-2.3f, 0.6f, -0.6f}, 0.3f, 0.6f, render::Quatf::Identity(), {0.4f, 0.6f, 0.3f}});
+    list.meshes.push_back({{2.3f, 0.7f, -0.6f}, render::Quatf::Identity(), tetrahedron(), {0.8f, 0.5f, 0.2f}});
     list.camera.position.x() += 0.2f * static_cast<float>(i);
     renderer.draw_into(list, frame);
     painter.paint(testing::lecture_overlay(), frame);
