@@ -3,6 +3,7 @@
 #include "physics/body.h"
 #include "physics/collide.h"
 #include "physics/hull.h"
+#include "tests/physics/placed_bodies.h"
 
 #include <gtest/gtest.h>
 
@@ -13,24 +14,7 @@
 namespace impulse::physics {
 namespace {
 
-Body placed(const Shape& shape, const Vec3& position, const Quat& orientation = Quat::Identity()) {
-  BodyDef def;
-  def.shape = shape;
-  def.position = position;
-  def.orientation = orientation;
-  def.is_static = shape.type == ShapeType::plane;
-  return make_body(def);
-}
-
-Quat about(const Vec3& axis, double degrees) { return Quat(Eigen::AngleAxis<Real>(degrees * std::numbers::pi / 180, axis.normalized())); }
-
-std::vector<Contact> contacts(const Body& a, const Body& b, Real margin = 0.01) {
-  std::vector<Contact> out;
-  collide(a, 0, b, 1, margin, out);
-  for (Contact& c : out)
-    if (c.body_a != 0) c.normal = -c.normal;
-  return out;
-}
+using namespace placing;
 
 std::vector<Vec3> cube_points(Real half) {
   std::vector<Vec3> points;

@@ -2,6 +2,7 @@
 // by geometry worked by hand, and their mass properties against a count of the volume.
 #include "physics/body.h"
 #include "physics/collide.h"
+#include "tests/physics/placed_bodies.h"
 #include "physics/manifold.h"
 
 #include <gtest/gtest.h>
@@ -12,25 +13,7 @@
 namespace impulse::physics {
 namespace {
 
-Body placed(const Shape& shape, const Vec3& position, const Quat& orientation = Quat::Identity()) {
-  BodyDef def;
-  def.shape = shape;
-  def.position = position;
-  def.orientation = orientation;
-  def.is_static = shape.type == ShapeType::plane;
-  return make_body(def);
-}
-
-Quat about(const Vec3& axis, double degrees) { return Quat(Eigen::AngleAxis<Real>(degrees * std::numbers::pi / 180, axis.normalized())); }
-
-// The normal as the way `a` leaves `b`, whichever collide() made A.
-std::vector<Contact> contacts(const Body& a, const Body& b, Real margin = 0.01) {
-  std::vector<Contact> out;
-  collide(a, 0, b, 1, margin, out);
-  for (Contact& c : out)
-    if (c.body_a != 0) c.normal = -c.normal;
-  return out;
-}
+using namespace placing;
 
 const Body kGround = placed(Shape::plane(Vec3::UnitY(), 0), Vec3::Zero());
 

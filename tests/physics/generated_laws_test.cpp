@@ -167,17 +167,20 @@ void any_shape(Draw& draw, SceneText& scene, Placement& placement, bool free) {
   else scene.round(shape == 2 ? "capsule" : "cylinder", at, radius, height, mass, velocity, spin, turned, restitution, friction);
 }
 
-std::string free_round_collisions(Draw& draw) {
-  SceneText scene("free collisions of every shape", 3.0);
+// Bodies that `add` draws thrown at each other in zero gravity, or dropped onto the ground.
+using AddBody = void (*)(Draw&, SceneText&, Placement&, bool free);
+
+std::string thrown_together(Draw& draw, const char* title, AddBody add) {
+  SceneText scene(title, 3.0);
   scene.line("[world]\ngravity = [0, 0, 0]");
   Placement placement(draw, Vec3(-2, -2, -2), Vec3(2, 2, 2));
   const int count = draw.integer(2, 8);
-  for (int i = 0; i < count; ++i) any_shape(draw, scene, placement, true);
+  for (int i = 0; i < count; ++i) add(draw, scene, placement, true);
   return scene.str();
 }
 
-std::string round_drops(Draw& draw) {
-  SceneText scene("drops of every shape", 4.0);
+std::string dropped(Draw& draw, const char* title, AddBody add) {
+  SceneText scene(title, 4.0);
   scene.line("[world]\nsleeping = " + std::string(draw.coin() ? "true" : "false"));
   // Drawn one statement each: the operands of + are evaluated in an order the compiler chooses.
   const double ground_restitution = draw.uniform(0, 1), ground_friction = draw.uniform(0, 1);
@@ -185,9 +188,12 @@ std::string round_drops(Draw& draw) {
              "\nfriction = " + SceneText::number(ground_friction));
   Placement placement(draw, Vec3(-3, 1.0, -3), Vec3(3, 4, 3));
   const int count = draw.integer(1, 10);
-  for (int i = 0; i < count; ++i) any_shape(draw, scene, placement, false);
+  for (int i = 0; i < count; ++i) add(draw, scene, placement, false);
   return scene.str();
 }
+
+std::string free_round_collisions(Draw& draw) { return thrown_together(draw, "free collisions of every shape", any_shape); }
+std::string round_drops(Draw& draw) { return dropped(draw, "drops of every shape", any_shape); }
 
 // A stack of 2 to 6 cylinders standing face on face (or capsules lying crosswise, each across the
 // one below), each of its own radius and mass, on the ground, sleeping off.
@@ -261,26 +267,8 @@ void any_shape_or_hull(Draw& draw, SceneText& scene, Placement& placement, bool 
   scene.shaped(fields, at, mass, velocity, spin, turned, restitution, friction);
 }
 
-std::string free_hull_collisions(Draw& draw) {
-  SceneText scene("free collisions of hulls and every shape", 3.0);
-  scene.line("[world]\ngravity = [0, 0, 0]");
-  Placement placement(draw, Vec3(-2, -2, -2), Vec3(2, 2, 2));
-  const int count = draw.integer(2, 8);
-  for (int i = 0; i < count; ++i) any_shape_or_hull(draw, scene, placement, true);
-  return scene.str();
-}
-
-std::string hull_drops(Draw& draw) {
-  SceneText scene("drops of hulls and every shape", 4.0);
-  scene.line("[world]\nsleeping = " + std::string(draw.coin() ? "true" : "false"));
-  const double ground_restitution = draw.uniform(0, 1), ground_friction = draw.uniform(0, 1);
-  scene.line("[[body]]\nshape = \"plane\"\nnormal = [0, 1, 0]\noffset = 0\nrestitution = " + SceneText::number(ground_restitution) +
-             "\nfriction = " + SceneText::number(ground_friction));
-  Placement placement(draw, Vec3(-3, 1.0, -3), Vec3(3, 4, 3));
-  const int count = draw.integer(1, 10);
-  for (int i = 0; i < count; ++i) any_shape_or_hull(draw, scene, placement, false);
-  return scene.str();
-}
+std::string free_hull_collisions(Draw& draw) { return thrown_together(draw, "free collisions of hulls and every shape", any_shape_or_hull); }
+std::string hull_drops(Draw& draw) { return dropped(draw, "drops of hulls and every shape", any_shape_or_hull); }
 
 // A stack of 2 to 6 prisms of 3 to 8 sides standing on their ends, each of its own size and mass
 // and turned about the vertical at random, on the ground, sleeping off.
