@@ -9,8 +9,6 @@
 
 #include <cstdio>
 #include <cstring>
-#include <map>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -55,45 +53,12 @@ std::vector<EGLDeviceEXT> hardware_devices() {
   return hardware;
 }
 
-// A context's hold on its display. EGL returns one display per platform and device, shared by
-// every context of the process, and eglTerminate is not counted: the first hold initialises it,
-// the last terminates it, so that the driver's threads (llvmpipe's) end with the last renderer
-// rather than run on into the process's exit, where LeakSanitizer's thread tracer can crash on
-// them.
-class DisplayHold {
- public:
-  DisplayHold(EGLDisplay display, const std::string& name) : display_(display) {
-    if (display_ == EGL_NO_DISPLAY) throw std::runtime_error(egl_error(("no display for " + name).c_str()));
-    const std::lock_guard lock(mutex());
-    if (!eglInitialize(display_, nullptr, nullptr)) throw std::runtime_error(egl_error(("cannot initialise " + name).c_str()));
-    ++holds()[display_];
-  }
-  ~DisplayHold() {
-    const std::lock_guard lock(mutex());
-    if (--holds()[display_] > 0) return;
-    holds().erase(display_);
-    eglTerminate(display_);
-  }
-  DisplayHold(const DisplayHold&) = delete;
-  DisplayHold& operator=(const DisplayHold&) = delete;
-  EGLDisplay display() const { return display_; }
-
- private:
-  static std::mutex& mutex() {
-    static std::mutex m;
-    return m;
-  }
-  static std::map<EGLDisplay, int>& holds() {
-    static std::map<EGLDisplay, int> h;
-    return h;
-  }
-  EGLDisplay display_;
-};
-
 class EglBackend final : public GlContext::Backend {
  public:
   // A context on `display`, initialised here; throws on any failure.
-  EglBackend(EGLDisplay display, std::string name) : hold_(display, name), display_(display) {
+  EglBackend(EGLDisplay display, std::string name) : display_(display) {
+    if (display_ == EGL_NO_DISPLAY) throw std::runtime_error(egl_error(("no display for " + name).c_str()));
+    if (!eglInitialize(display_, nullptr, nullptr)) throw std::runtime_error(egl_error(("cannot initialise " + name).c_str()));
     const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
     if (!has_extension(extensions, "EGL_KHR_surfaceless_context"))
       throw std::runtime_error("EGL: " + name + " cannot draw without a surface (EGL_KHR_surfaceless_context)");
@@ -114,6 +79,8 @@ class EglBackend final : public GlContext::Backend {
     device = std::move(name);
     make_current();
   }
+  // The display stays initialised: other contexts of the process share it (EGL returns one
+  // display per platform and device).
   ~EglBackend() override {
     if (is_current()) eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display_, context_);
@@ -127,7 +94,6 @@ class EglBackend final : public GlContext::Backend {
   GlLoader loader() const override { return [](const char* name) { return GlProc(eglGetProcAddress(name)); }; }
 
  private:
-  DisplayHold hold_;
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
 };

@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -44,29 +43,6 @@ TEST(GlContext, EachBackendSaysWhatItIsAndWhatDraws) {
   EXPECT_EQ(context.info().backend, render::GlBackend::osmesa);
   EXPECT_EQ(context.info().device, "OSMesa");
   EXPECT_NE(context.info().renderer.find("llvmpipe"), std::string::npos) << context.info().renderer;
-}
-
-int threads_of_this_process() {
-  int count = 0;
-  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator("/proc/self/task")) ++count;
-  return count;
-}
-
-// The last EGL context gone, its display is terminated and llvmpipe's threads with it: none run on
-// into the process's exit (where LeakSanitizer's thread tracer crashed on them).
-TEST(GlContext, TheDriversThreadsEndWithTheLastEglContext) {
-  if (render::egl_gpu_count() > 0) GTEST_SKIP() << "EGL draws on a GPU here, not llvmpipe";
-  const int before = threads_of_this_process();
-  for (int round = 0; round < 2; ++round) {  // and a display terminated is initialised again
-    {
-      const GlEnvironment environment("egl");
-      render::Renderer renderer(64, 48);
-      const render::Frame frame = renderer.draw(testing::bodies_scene());
-      EXPECT_EQ(frame.width, 64);
-      EXPECT_GT(threads_of_this_process(), before) << "llvmpipe draws with threads of its own";
-    }
-    EXPECT_EQ(threads_of_this_process(), before) << "round " << round;
-  }
 }
 
 // The same driver behind both: the same frame to the byte, shadows, impostors and edges included.
