@@ -86,7 +86,7 @@ int collide_hull_plane(const Body& a, int ia, const Body& b, int ib, Real margin
   int lowest = 0, facing = 0;
   for (int i = 1; i < int(hull.corners.size()); ++i)
     if (hull.corners[i].dot(down) > hull.corners[lowest].dot(down)) lowest = i;
-  const Real height = n.dot(a.position) - b.shape.offset - hull.corners[lowest].dot(down);
+  const Real height = n.dot(a.position) - b.shape.offset - hull.corners[lowest].dot(down);  // the lowest corner's separation
   if (height > margin) return 0;
   for (int f = 1; f < int(hull.faces.size()); ++f)
     if (hull.faces[f].normal.dot(down) > hull.faces[facing].normal.dot(down)) facing = f;
@@ -109,10 +109,7 @@ int collide_hull_plane(const Body& a, int ia, const Body& b, int ib, Real margin
       lowest_added = lowest_added || hull.corner_of(face, k) == lowest;
     }
   }
-  if (!lowest_added) {
-    const Real lowest_separation = n.dot(a.position + rotation * hull.corners[lowest]) - b.shape.offset;
-    if (lowest_separation < deepest - kDeeper) add(hull.corners[lowest], feature::corner(lowest));
-  }
+  if (!lowest_added && height < deepest - kDeeper) add(hull.corners[lowest], feature::corner(lowest));
   Vec3 t1, t2;
   tangent_basis(n, t1, t2);
   return reduce_manifold(out, first, n, a.position, search_direction(t1, t2));
