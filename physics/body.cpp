@@ -40,7 +40,7 @@ Body make_body(const BodyDef& def) {
   body.orientation = def.orientation.normalized();
   if (def.shape.type == ShapeType::plane) body.shape.normal.normalize();
 
-  if (!def.is_static && def.shape.type != ShapeType::plane) {
+  if (!def.is_static && def.shape.type != ShapeType::plane && def.shape.type != ShapeType::mesh) {
     body.mass = def.mass > 0 ? def.mass : def.density * shape_volume(def.shape);
     body.inv_mass = 1 / body.mass;
     body.inertia_local = !def.principal_inertia.isZero()          ? Mat3(def.principal_inertia.asDiagonal())

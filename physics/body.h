@@ -21,7 +21,7 @@ enum class MassSpread { solid, hollow };
 struct BodyDef {
   std::string name;
   Shape shape;
-  bool is_static = false;  // infinite mass; planes are always static
+  bool is_static = false;  // infinite mass; planes and meshes are always static
   Real mass = 0;
   Real density = 1000;     // kg/m^3
   MassSpread spread = MassSpread::solid;  // the inertia's, from the shape (the mass stays `mass`'s)

@@ -37,24 +37,30 @@ int collide(const Body& a, int ia, const Body& b, int ib, Real margin, std::vect
         case capsule: return collide_sphere_capsule(a, ia, b, ib, margin, out);
         case cylinder: return collide_sphere_cylinder(a, ia, b, ib, margin, out);
         case hull: return collide_sphere_hull(a, ia, b, ib, margin, out);
+        case mesh: return collide_sphere_mesh(a, ia, b, ib, margin, out);
         case plane: return collide_sphere_plane(a, ia, b, ib, margin, out);
       }
       break;
     case box:
+      if (b.shape.type == mesh) return collide_convex_mesh(a, ia, b, ib, margin, out);
       if (b.shape.type == box) return collide_boxes(a, ia, b, ib, margin, out, cache);
       if (b.shape.type == plane) return collide_box_plane(a, ia, b, ib, margin, out);
       return collide_convex(a, ia, b, ib, margin, out);
     case capsule:
+      if (b.shape.type == mesh) return collide_convex_mesh(a, ia, b, ib, margin, out);
       if (b.shape.type == plane) return collide_capsule_plane(a, ia, b, ib, margin, out);
       return collide_convex(a, ia, b, ib, margin, out);
     case cylinder:
+      if (b.shape.type == mesh) return collide_convex_mesh(a, ia, b, ib, margin, out);
       if (b.shape.type == plane) return collide_cylinder_plane(a, ia, b, ib, margin, out);
       return collide_convex(a, ia, b, ib, margin, out);
     case hull:
+      if (b.shape.type == mesh) return collide_convex_mesh(a, ia, b, ib, margin, out);
       if (b.shape.type == plane) return collide_hull_plane(a, ia, b, ib, margin, out);
       return collide_convex(a, ia, b, ib, margin, out);
+    case mesh:
     case plane:
-      break;  // planes are static: two never meet
+      break;  // meshes and planes are static: two never meet
   }
   return 0;
 }

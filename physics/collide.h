@@ -43,5 +43,8 @@ int collide_hull_plane(const Body& a, int ia, const Body& b, int ib, Real margin
 // A box, capsule, cylinder or hull against a capsule, cylinder or hull: GJK and EPA, then clipping
 // (collide_convex.cpp).
 int collide_convex(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
+// A sphere, and any other shape but a plane, against a static mesh (collide_mesh.cpp).
+int collide_sphere_mesh(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
+int collide_convex_mesh(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out);
 
 }  // namespace impulse::physics

@@ -396,6 +396,10 @@ int collide_convex(const Body& a, int ia, const Body& b, int ib, Real margin, st
   }
   if (out.size() == first) {
     if (epa_separation > margin) return 0;
+    // libccd's point, where it is within reach of both shapes (near a touching face it can lie
+    // far from either: a lever arm of metres).
+    for (const Body* body : {&a, &b})
+      if (!((epa_point - body->position).norm() <= bounding_radius(body->shape) + margin)) return 0;
     out.push_back({ia, ib, epa_point, normal, epa_separation, feature::round_point(0, fa.round, fb.round)});
     return 1;
   }

@@ -164,19 +164,25 @@ void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& cont
   m.first = first_of_place_[place];
   m.count = end - first;
   const auto [same_pair, other_pair] = previous_range_[manifold];
+  // The friction's warm start: last step's manifold of the pair that shares a point with this one
+  // (a mesh's pair has one per triangle normal), else its last.
+  int friction_from = other_pair - 1;
   for (int i = 0; i < m.count; ++i) {
     ContactConstraint& c = constraints_[m.first + i];
     c = make_constraint(contacts[first + i], bodies, solver_bodies, slots, settings_, *pair_materials_, gravity, i > 0 ? &constraints_[m.first] : nullptr);
     for (int previous = same_pair; previous != other_pair; ++previous) {
       const ManifoldWarm& pm = previous_warm_manifolds_[previous_pairs_[previous].manifold];
       for (int j = 0; j < pm.count; ++j)
-        if (previous_warm_points_[pm.first + j].feature == c.feature) c.normal_impulse = warm_scale * previous_warm_points_[pm.first + j].normal_impulse;
+        if (previous_warm_points_[pm.first + j].feature == c.feature) {
+          c.normal_impulse = warm_scale * previous_warm_points_[pm.first + j].normal_impulse;
+          friction_from = previous;
+        }
     }
   }
   ManifoldLanes& block = begin_lanes(place, m);
   prepare_shared_rows(m, block, lane_of_place_[place].lane, bodies[contacts[first].body_a], bodies[contacts[first].body_b], solver_bodies);
   if (same_pair != other_pair) {
-    warm_start_friction(m, previous_warm_manifolds_[previous_pairs_[other_pair - 1].manifold]);
+    warm_start_friction(m, previous_warm_manifolds_[previous_pairs_[friction_from].manifold]);
     m.tangent_impulse1 *= warm_scale;
     m.tangent_impulse2 *= warm_scale;
     m.twist_impulse *= warm_scale;

@@ -19,6 +19,7 @@ Real shape_volume(const Shape& shape) {
       return std::numbers::pi * shape.radius * shape.radius * (2 * shape.half_height + Real(4) / 3 * shape.radius);
     case ShapeType::cylinder: return std::numbers::pi * shape.radius * shape.radius * (2 * shape.half_height);
     case ShapeType::hull: return shape.hull->volume;
+    case ShapeType::mesh:
     case ShapeType::plane: return 0;
   }
   return 0;
@@ -60,6 +61,7 @@ Mat3 shape_unit_inertia(const Shape& shape) {
       return about_y(r2 / 2, r2 / 4 + h2 / 3);
     }
     case ShapeType::hull: return shape.hull->unit_inertia;
+    case ShapeType::mesh:
     case ShapeType::plane: return Mat3::Zero();
   }
   return Mat3::Zero();
@@ -92,6 +94,7 @@ Mat3 shape_unit_shell_inertia(const Shape& shape) {
       return about_y(r2, r2 / 2 + h2 / 3);
     }
     case ShapeType::hull: return shape.hull->unit_shell_inertia;
+    case ShapeType::mesh:
     case ShapeType::plane: return Mat3::Zero();
   }
   return Mat3::Zero();
@@ -110,6 +113,11 @@ Real reach_along(const Shape& shape, const Quat& orientation, const Vec3& d) {
       for (const Vec3& p : shape.hull->corners) reach = std::max(reach, p.dot(local));
       return reach;
     }
+    case ShapeType::mesh: {
+      Real reach = -std::numeric_limits<Real>::infinity();
+      for (const Vec3& p : shape.mesh->vertices) reach = std::max(reach, p.dot(local));
+      return reach;
+    }
     case ShapeType::plane: return 0;
   }
   return 0;
@@ -124,6 +132,11 @@ Real bounding_radius(const Shape& shape) {
     case ShapeType::hull: {
       Real farthest = 0;
       for (const Vec3& p : shape.hull->corners) farthest = std::max(farthest, p.norm());
+      return farthest;
+    }
+    case ShapeType::mesh: {
+      Real farthest = 0;
+      for (const Vec3& p : shape.mesh->vertices) farthest = std::max(farthest, p.norm());
       return farthest;
     }
     case ShapeType::plane: return 0;
@@ -142,6 +155,7 @@ Real thinnest_half_size(const Shape& shape) {
       for (const HullFace& face : shape.hull->faces) nearest = std::min(nearest, face.offset);
       return nearest;
     }
+    case ShapeType::mesh:
     case ShapeType::plane: return std::numeric_limits<Real>::infinity();
   }
   return 0;
@@ -165,6 +179,9 @@ std::string shape_problem(const Shape& shape) {
       return {};
     case ShapeType::hull:
       if (!shape.hull || shape.hull->faces.size() < 4 || !(shape.hull->volume > 0)) return "a hull must enclose a volume";
+      return {};
+    case ShapeType::mesh:
+      if (!shape.mesh || shape.mesh->triangles.empty()) return "a mesh needs at least one triangle";
       return {};
     case ShapeType::plane:
       if (!is_finite(shape.normal) || shape.normal.norm() < Real(1e-9)) return "normal must be a non-zero finite vector";

@@ -1,6 +1,7 @@
 // Collision shapes and their mass properties.
 #pragma once
 #include "physics/hull.h"
+#include "physics/mesh.h"
 #include "physics/math.h"
 
 #include <memory>
@@ -9,14 +10,15 @@
 namespace impulse::physics {
 
 // The order is collide()'s: a pair is dispatched with A the earlier type.
-enum class ShapeType { sphere, box, capsule, cylinder, hull, plane };
+enum class ShapeType { sphere, box, capsule, cylinder, hull, mesh, plane };
 
 // A shape in its body's local frame. A plane is static only: the points x with
 // dot(normal, x) = offset, solid below (the side opposite the normal). A capsule is the points
 // within `radius` of the segment from -half_height to +half_height along the body's y (Bullet's,
 // Jolt's and MuJoCo's: `height`, the segment's length, leaves out the caps); a cylinder has its
 // axis along y and its flat faces at y = +-half_height. A hull's corners are about its centre of
-// mass, in its principal axes (hull.h's place_hull).
+// mass, in its principal axes (hull.h's place_hull). A mesh is static only, as a plane: its
+// triangles in its body's frame (mesh.h), solid nowhere, touched from each triangle's front.
 struct Shape {
   ShapeType type = ShapeType::sphere;
   Real radius = 0.5;                   // sphere, capsule, cylinder
@@ -25,12 +27,14 @@ struct Shape {
   Vec3 normal{0, 1, 0};                // plane, world space
   Real offset = 0;                     // plane
   std::shared_ptr<const Hull> hull;    // hull
+  std::shared_ptr<const Mesh> mesh;    // mesh
 
   static Shape sphere(Real r) { Shape s; s.type = ShapeType::sphere; s.radius = r; return s; }
   static Shape box(const Vec3& h) { Shape s; s.type = ShapeType::box; s.half_extents = h; return s; }
   static Shape capsule(Real r, Real half) { Shape s; s.type = ShapeType::capsule; s.radius = r; s.half_height = half; return s; }
   static Shape cylinder(Real r, Real half) { Shape s; s.type = ShapeType::cylinder; s.radius = r; s.half_height = half; return s; }
   static Shape convex(std::shared_ptr<const Hull> h) { Shape s; s.type = ShapeType::hull; s.hull = std::move(h); return s; }
+  static Shape surface(std::shared_ptr<const Mesh> m) { Shape s; s.type = ShapeType::mesh; s.mesh = std::move(m); return s; }
   static Shape plane(const Vec3& n, Real d) { Shape s; s.type = ShapeType::plane; s.normal = n; s.offset = d; return s; }
 };
 
@@ -49,13 +53,13 @@ Mat3 shape_unit_inertia(const Shape& shape);  // multiply by mass
 Mat3 shape_unit_shell_inertia(const Shape& shape);
 
 // How far the shape, turned by `orientation`, reaches from its centre along the unit direction `d`:
-// its support distance (a plane: 0).
+// its support distance (a plane: 0; a mesh: its farthest vertex's).
 Real reach_along(const Shape& shape, const Quat& orientation, const Vec3& d);
-// Distance from the centre to the farthest point of the shape (0 for a plane).
+// Distance from the centre to the farthest point of the shape (0 for a plane; a mesh: its farthest vertex).
 Real bounding_radius(const Shape& shape);
 // Half the shape's thinnest size: a sphere's or capsule's radius, a box's smallest half extent, the
 // smaller of a cylinder's radius and half height, a hull's nearest face from its centre (a plane:
-// infinite).
+// infinite, a mesh too).
 Real thinnest_half_size(const Shape& shape);
 
 // Why a shape is impossible ("radius must be > 0, got -1"), or empty when it is fine.

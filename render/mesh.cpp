@@ -130,9 +130,11 @@ MeshData make_quad() {
 }
 
 MeshData make_flat_mesh(const std::vector<Vec3>& corners) {
-  // Triangles meeting at less than this (cosine of 0.25 degrees) are one face: a fan across a flat
-  // polygon rounds its normals apart by far less, a polyhedron's faces meet at far more.
-  constexpr float kSamePlane = 0.99999f;
+  // Triangles meeting at less than this (cosine of 5 degrees) are one surface, no line between
+  // them: a fan across a flat polygon rounds its normals apart by far less, a mesh's curved
+  // surface (a half-pipe's strips, 1.25 degrees apart) would be ruled with lines, and a
+  // polyhedron's faces meet at far more (a 16-sided prism's at 22.5).
+  constexpr float kSamePlane = 0.99619f;
   const size_t count = corners.size() / 3;
   std::vector<Vec3> normals(count, Vec3::Zero());
   for (size_t t = 0; t < count; ++t) {

@@ -72,6 +72,7 @@ void add_body_boxes(const std::vector<physics::Body>& bodies, const std::vector<
       case physics::ShapeType::hull:
         if (shape.hull) box = corners_box(poses[i], shape.hull->corners, view);
         break;
+      case physics::ShapeType::mesh:  // a surface, as a plane: what lies on it is what the eye follows
       case physics::ShapeType::plane: break;
     }
     if (!box || !(box->right() > 0 && box->bottom() > 0 && box->x < float(view.width) && box->y < float(view.height))) continue;

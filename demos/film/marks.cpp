@@ -48,6 +48,7 @@ double body_size(const physics::Shape& shape) {
     case physics::ShapeType::capsule: return shape.radius;
     case physics::ShapeType::cylinder: return std::min(shape.radius, shape.half_height);
     case physics::ShapeType::hull: return physics::thinnest_half_size(shape);
+    case physics::ShapeType::mesh:
     case physics::ShapeType::plane: return INFINITY;
   }
   return INFINITY;

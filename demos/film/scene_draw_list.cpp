@@ -78,30 +78,44 @@ render::BoxItem plane_slab(const physics::Shape& plane, const render::Camera& ca
   return slab;
 }
 
-// A hull's faces as triangles (each face fanned from its first corner, so counter-clockwise seen
-// from outside as the face is), made once per hull and shared by every frame that draws it: the
+// A shape's triangles, made once per hull or mesh and shared by every frame that draws it: the
 // renderer uploads one mesh per vector. Draw lists are made on any thread, several at once, hence
-// the lock; an entry whose hull is gone (its address perhaps now another's) is made again, and
+// the lock; an entry whose shape is gone (its address perhaps now another's) is made again, and
 // such entries are dropped whenever one is added.
-std::shared_ptr<const std::vector<render::Vec3f>> hull_triangles(const std::shared_ptr<const physics::Hull>& hull) {
+template <class Surface, class Make>
+std::shared_ptr<const std::vector<render::Vec3f>> kept_triangles(const std::shared_ptr<const Surface>& surface, Make make) {
   struct Made {
-    std::weak_ptr<const physics::Hull> hull;
+    std::weak_ptr<const Surface> surface;
     std::shared_ptr<const std::vector<render::Vec3f>> triangles;
   };
   static std::mutex mutex;
-  static std::unordered_map<const physics::Hull*, Made> made;
+  static std::unordered_map<const Surface*, Made> made;
   const std::lock_guard lock(mutex);
-  if (const auto found = made.find(hull.get()); found != made.end() && found->second.hull.lock() == hull)
+  if (const auto found = made.find(surface.get()); found != made.end() && found->second.surface.lock() == surface)
     return found->second.triangles;
-
   auto triangles = std::make_shared<std::vector<render::Vec3f>>();
-  for (const physics::HullFace& face : hull->faces)
-    for (int k = 1; k + 1 < face.count; ++k)
-      for (const int corner : {hull->corner_of(face, 0), hull->corner_of(face, k), hull->corner_of(face, k + 1)})
-        triangles->push_back(to_float(hull->corners[size_t(corner)]));
-  std::erase_if(made, [](const auto& entry) { return entry.second.hull.expired(); });
-  made[hull.get()] = {hull, triangles};
+  make(*surface, *triangles);
+  std::erase_if(made, [](const auto& entry) { return entry.second.surface.expired(); });
+  made[surface.get()] = {surface, triangles};
   return triangles;
+}
+
+// A hull's faces, each fanned from its first corner, so counter-clockwise seen from outside as the face is.
+std::shared_ptr<const std::vector<render::Vec3f>> hull_triangles(const std::shared_ptr<const physics::Hull>& hull) {
+  return kept_triangles(hull, [](const physics::Hull& h, std::vector<render::Vec3f>& triangles) {
+    for (const physics::HullFace& face : h.faces)
+      for (int k = 1; k + 1 < face.count; ++k)
+        for (const int corner : {h.corner_of(face, 0), h.corner_of(face, k), h.corner_of(face, k + 1)})
+          triangles.push_back(to_float(h.corners[size_t(corner)]));
+  });
+}
+
+// A mesh's triangles as the file gave them.
+std::shared_ptr<const std::vector<render::Vec3f>> mesh_triangles(const std::shared_ptr<const physics::Mesh>& mesh) {
+  return kept_triangles(mesh, [](const physics::Mesh& m, std::vector<render::Vec3f>& triangles) {
+    for (const physics::MeshTriangle& triangle : m.triangles)
+      for (const int corner : triangle.corners) triangles.push_back(to_float(m.vertices[size_t(corner)]));
+  });
 }
 
 }  // namespace
@@ -173,6 +187,10 @@ render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::
         if (body.shape.hull)
           list.meshes.push_back({to_float(pose.position), pose.orientation.cast<float>(), hull_triangles(body.shape.hull),
                                  colour, sleeping});
+        break;
+      case physics::ShapeType::mesh:
+        if (body.shape.mesh)
+          list.meshes.push_back({to_float(pose.position), pose.orientation.cast<float>(), mesh_triangles(body.shape.mesh), colour, false});
         break;
       case physics::ShapeType::plane:
         // The renderer draws one ground; a horizontal plane becomes it, any other a slab.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iterator>
 #include <stdexcept>
 
@@ -34,7 +35,7 @@ void read_body(const TableReader& top, const toml::table& table, int index, Scen
   TableReader r = top.child(table, "[[body]] '" + def.name + "'");
   r.get("name");
   const std::string shape =
-      r.choice("shape", "", {"sphere", "box", "capsule", "cylinder", "hull", "wedge", "tetrahedron", "prism", "plane"});
+      r.choice("shape", "", {"sphere", "box", "capsule", "cylinder", "hull", "wedge", "tetrahedron", "prism", "mesh", "plane"});
   // A hull's points in the body's frame, about `position` (its centre of mass and principal axes
   // are found once the inertia's spread is known).
   std::vector<Vec3> points;
@@ -68,6 +69,18 @@ void read_body(const TableReader& top, const toml::table& table, int index, Scen
     const Vec3 size = r.vec3("size", Vec3(1, 1, 1), kLargestSize, "m", "a lecture's bodies are smaller");
     if (!(size.minCoeff() > 0)) r.fail(r.get("size"), "size", "every edge must be > 0 (metres: [x, y, z])");
     def.shape = physics::Shape::box(size / 2);
+  } else if (shape == "mesh") {  // a static surface: an OBJ file's triangles, from the scene's folder
+    const std::string file = r.string("file", "");
+    if (file.empty()) r.fail(r.get("file"), "file", "a mesh needs its file: file = \"bowl.obj\" (a Wavefront OBJ, beside the scene file)");
+    const double scale = r.number("scale", 1, 0, kLargestSize, true);
+    const std::filesystem::path path = std::filesystem::path(file).is_relative() ? std::filesystem::path(scene.path).parent_path() / file
+                                                                                 : std::filesystem::path(file);
+    try {
+      def.shape = physics::Shape::surface(read_mesh_file(path.string(), scale));
+    } catch (const std::runtime_error& error) {
+      r.fail(r.get("file"), "file", error.what());
+    }
+    def.is_static = true;
   } else if (shape == "plane") {
     // The points x with normal·x = offset, for a normal of any length: the plane lies offset/|normal|
     // from the origin along it.
@@ -79,7 +92,7 @@ void read_body(const TableReader& top, const toml::table& table, int index, Scen
     def.is_static = true;
   }
   def.is_static = r.boolean("static", def.is_static);
-  if (shape == "plane" && !def.is_static) r.fail(r.get("static"), "static", "a plane is always static");
+  if ((shape == "plane" || shape == "mesh") && !def.is_static) r.fail(r.get("static"), "static", "a " + shape + " is always static");
   def.mass = r.number("mass", 0, 0, kLargestMass, true);  // 0: from density
   def.density = r.number("density", def.density, 0, kLargestMass, true);
   // "solid" (the mass through the volume), "hollow" (a thin shell), or the three principal moments.

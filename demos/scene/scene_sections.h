@@ -35,6 +35,9 @@ void read_material_pairs(TableReader& top, Scene& scene);  // [[material_pair]],
 // A body's `planar = "xy"` (or "yz", "xz", "none"): the world axis its plane is normal to
 // (physics/planar.h), else `fallback`, the world's.
 int read_planar(TableReader& r, int fallback);
+// A "mesh" body's OBJ file, its coordinates multiplied by `scale` (scene_mesh.cpp). Throws
+// std::runtime_error saying why it cannot be read.
+std::shared_ptr<const physics::Mesh> read_mesh_file(const std::string& path, double scale);
 // A body's `material = "NAME"`, if it has one: its kind (physics/materials.h), a new one for a new name.
 void read_material_kind(TableReader& r, Scene& scene, physics::BodyDef& def);
 void read_view(TableReader& top, Scene& scene);

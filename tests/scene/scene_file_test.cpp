@@ -372,5 +372,34 @@ inertia = "hollow"
   EXPECT_LT((die.position - physics::Vec3::Constant(each)).norm(), 1e-12);
 }
 
+// A mesh's file is read from the scene's folder, scaled, and placed by position and rotation;
+// the body is static whatever the file says of it, and `static = false` is refused.
+TEST(SceneFile, AMeshIsItsFilesTrianglesFromTheScenesFolderPlacedAndStatic) {
+  const std::filesystem::path obj = std::filesystem::path(write_scene("mesh", "")).parent_path() / "impulse_scene_test_ramp.obj";
+  std::ofstream(obj) << "v 0 0 0\nv 0 0 -1\nv 1 0 0\nv 1 1 -1\nf 1 3 2\nf 2 3 4\n";
+  const Scene scene = load_scene(write_scene("mesh", R"([[body]]
+name = "ramp"
+shape = "mesh"
+file = "impulse_scene_test_ramp.obj"
+scale = 2
+position = [1, 0, 0]
+rotation = [0, 90, 0]
+)"));
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  const physics::BodyDef& ramp = scene.bodies[0];
+  ASSERT_EQ(ramp.shape.type, physics::ShapeType::mesh);
+  EXPECT_TRUE(ramp.is_static);
+  ASSERT_EQ(ramp.shape.mesh->triangles.size(), 2u);
+  EXPECT_TRUE(ramp.shape.mesh->vertices[3].isApprox(physics::Vec3(2, 2, -2)));
+  EXPECT_LT((ramp.position - physics::Vec3(1, 0, 0)).norm(), 1e-12);
+  EXPECT_LT((physics::rotate(ramp.orientation, physics::Vec3::UnitX()) - physics::Vec3(0, 0, -1)).norm(), 1e-12);
+  try {
+    load_scene(write_scene("mesh_moving", "[[body]]\nshape = \"mesh\"\nfile = \"impulse_scene_test_ramp.obj\"\nstatic = false\n"));
+    FAIL() << "a moving mesh was taken";
+  } catch (const SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("field 'static': a mesh is always static"), std::string::npos) << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace impulse::demos
