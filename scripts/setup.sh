@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages that building and rendering need (the program, the Python
-# package, the .deb), only those that are missing; with --tests, the test tools too (GoogleTest,
-# pytest, the sanitizers' clang, the fuzzer, Chromium, Slurm, the benchmarks' peers).
+# package, the .deb), only those that are missing, and the page's npm packages (web/); with
+# --tests, the test tools too (GoogleTest, pytest, the sanitizers' clang, the fuzzer, Chromium,
+# Slurm, the benchmarks' peers).
 # Idempotent and quiet when everything is already there. Runs apt-get as root or through sudo.
 set -euo pipefail
 
@@ -25,6 +26,7 @@ packages=(
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev libavfilter-dev   # H.264 MP4, VP9 WebM, GIF (libx264, libvpx inside; GIF's palettes by libavfilter)
   libtomlplusplus-dev                             # scene files
   libcli11-dev                                    # command line
+  nodejs                                          # the page's viewer (web/), bundled at build time by esbuild
   libseccomp-dev                                  # the sandbox of students' code (demos/response)
   libcairo2-dev fonts-dejavu-core                 # 2D overlays and their font
   libpango1.0-dev fonts-noto-core fonts-noto-color-emoji   # ... characters DejaVu lacks (emoji, rarer scripts and signs), from Noto through Pango's fallback
@@ -45,18 +47,29 @@ $tests && packages+=(
   slurmctld slurmd slurm-client munge             # tests: the Slurm example (docs/autograders/slurm) on a one-node Slurm
 )
 
+command -v npm >/dev/null || packages+=(npm)   # the page's packages (web/), where Node.js came without it
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
-
-as_root=()
-if [ "$(id -u)" -ne 0 ]; then
-  command -v sudo >/dev/null || { echo "setup: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
-  as_root=(sudo)
+if [ ${#missing[@]} -gt 0 ]; then
+  as_root=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "setup: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+    as_root=(sudo)
+  fi
+  echo "setup: installing ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  "${as_root[@]}" apt-get update -qq
+  "${as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
-echo "setup: installing ${missing[*]}" >&2
-export DEBIAN_FRONTEND=noninteractive
-"${as_root[@]}" apt-get update -qq
-"${as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+
+# The page's viewer (web/): three.js and esbuild from the npm registry, exactly as
+# web/package-lock.json pins them; installed again only when the lock file changed.
+cd "$(dirname "$0")/../web"
+if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  echo "setup: installing the page's npm packages (web/package-lock.json)" >&2
+  npm ci --no-audit --no-fund --loglevel=error >/dev/null ||
+    { echo "setup: npm ci in web/ failed: the page's three.js and esbuild come from the npm registry" >&2; exit 1; }
+fi

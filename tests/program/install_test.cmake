@@ -26,7 +26,7 @@ endfunction()
 
 run(${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix})
 foreach(file bin/impulse bin/impulse-respond include/impulse/workshop.h share/impulse/scenes/bounce.toml
-             share/impulse/workshop/listing1_corrected.cpp)
+             share/impulse/workshop/listing1_corrected.cpp share/impulse/meshes/half_pipe.obj share/impulse/web/page.js)
   if(NOT EXISTS ${prefix}/${file})
     message(FATAL_ERROR "cmake --install put no ${file} under the prefix")
   endif()
@@ -52,6 +52,12 @@ file(SIZE ${elsewhere}/videos/bounce.mp4 size)
 file(READ ${elsewhere}/videos/bounce.mp4 head LIMIT 8 HEX)
 if(size LESS 1000 OR NOT head MATCHES "^........66747970$")
   message(FATAL_ERROR "videos/bounce.mp4 is not an MP4 (${size} bytes, starting ${head})")
+endif()
+# The page of the installed half-pipe: its mesh file found beside the installed scenes.
+run(${impulse} -q export ${prefix}/share/impulse/scenes/s5_half_pipe.toml -o pages/half_pipe.html)
+file(READ ${elsewhere}/pages/half_pipe.html page)
+if(NOT page MATCHES "\"shape\":\"mesh\"" OR NOT page MATCHES "WebGLRenderer")
+  message(FATAL_ERROR "pages/half_pipe.html holds no mesh or no viewer")
 endif()
 # The gallery of it, from the installed catalogue's scene files.
 run(${impulse} gallery -o videos)

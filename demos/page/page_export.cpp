@@ -1,0 +1,208 @@
+#include "demos/page/page_export.h"
+
+#include "demos/film/world_take.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace impulse::demos {
+
+namespace {
+
+// Numbers as JSON: enough digits for 1e-6 m at lecture sizes, shortest form.
+void number(std::ostream& out, double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.7g", std::isfinite(value) ? value : 0.0);
+  out << text;
+}
+void vector(std::ostream& out, const physics::Vec3& v) {
+  out << '[';
+  number(out, v.x());
+  out << ',';
+  number(out, v.y());
+  out << ',';
+  number(out, v.z());
+  out << ']';
+}
+// A JSON string, escaped; "</" written as "<\/" so that no text closes the page's script element.
+void text(std::ostream& out, const std::string& value) {
+  out << '"';
+  char previous = 0;
+  for (const char c : value) {
+    if (c == '"' || c == '\\') out << '\\' << c;
+    else if (c == '/' && previous == '<') out << "\\/";
+    else if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+      out << escaped;
+    } else out << c;
+    previous = c;
+  }
+  out << '"';
+}
+
+const char* shape_name(physics::ShapeType type) {
+  switch (type) {
+    case physics::ShapeType::sphere: return "sphere";
+    case physics::ShapeType::box: return "box";
+    case physics::ShapeType::capsule: return "capsule";
+    case physics::ShapeType::cylinder: return "cylinder";
+    case physics::ShapeType::hull: return "hull";
+    case physics::ShapeType::mesh: return "mesh";
+    case physics::ShapeType::plane: return "plane";
+  }
+  return "sphere";
+}
+
+void triangle_corners(std::ostream& out, const physics::Shape& shape) {
+  out << ",\"triangles\":[";
+  bool first = true;
+  auto corner = [&](const physics::Vec3& p) {
+    for (int k = 0; k < 3; ++k) {
+      if (!first) out << ',';
+      first = false;
+      number(out, p[k]);
+    }
+  };
+  if (shape.type == physics::ShapeType::hull) {  // each face fanned from its first corner
+    const physics::Hull& hull = *shape.hull;
+    for (const physics::HullFace& face : hull.faces)
+      for (int k = 1; k + 1 < face.count; ++k)
+        for (const int c : {hull.corner_of(face, 0), hull.corner_of(face, k), hull.corner_of(face, k + 1)}) corner(hull.corners[size_t(c)]);
+  } else {
+    const physics::Mesh& mesh = *shape.mesh;
+    for (const physics::MeshTriangle& triangle : mesh.triangles)
+      for (const int c : triangle.corners) corner(mesh.vertices[size_t(c)]);
+  }
+  out << ']';
+}
+
+void body_json(std::ostream& out, const physics::Body& body, const Colour& colour) {
+  const physics::Shape& s = body.shape;
+  out << "{\"name\":";
+  text(out, body.name);
+  out << ",\"shape\":\"" << shape_name(s.type) << "\",\"static\":" << (body.is_static() ? "true" : "false") << ",\"colour\":";
+  vector(out, physics::Vec3(colour.r, colour.g, colour.b));
+  switch (s.type) {
+    case physics::ShapeType::sphere: out << ",\"radius\":"; number(out, s.radius); break;
+    case physics::ShapeType::box: out << ",\"half_extents\":"; vector(out, s.half_extents); break;
+    case physics::ShapeType::capsule:
+    case physics::ShapeType::cylinder:
+      out << ",\"radius\":";
+      number(out, s.radius);
+      out << ",\"half_height\":";
+      number(out, s.half_height);
+      break;
+    case physics::ShapeType::hull:
+    case physics::ShapeType::mesh: triangle_corners(out, s); break;
+    case physics::ShapeType::plane:
+      out << ",\"normal\":";
+      vector(out, s.normal);
+      out << ",\"offset\":";
+      number(out, s.offset);
+      break;
+  }
+  out << '}';
+}
+
+}  // namespace
+
+void write_run_json(const Scene& scene, std::ostream& out) {
+  WorldTake take(scene);
+  const int fps = scene.video.fps;
+  // Every frame that starts before the duration ends, as the video's at real speed (1 s at 30 fps:
+  // 30 frames, at 0 .. 29/30 s).
+  const long frames = std::max(1L, std::lround(std::ceil(scene.duration * fps - 0.5)));
+  out << "{\"title\":";
+  text(out, scene.title);
+  out << ",\"fps\":" << fps << ",\"duration\":";
+  number(out, scene.duration);
+  out << ",\"camera\":{\"position\":";
+  vector(out, scene.camera.position.cast<double>());
+  out << ",\"target\":";
+  vector(out, scene.camera.target.cast<double>());
+  out << ",\"fov_y_degrees\":";
+  number(out, scene.camera.fov_y_degrees);
+  out << "},\"bodies\":[";
+  const std::vector<physics::Body>& bodies = take.bodies();
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    if (i > 0) out << ',';
+    body_json(out, bodies[i], scene.colours[i]);
+  }
+  out << "],\"frames\":[";
+  FrameSample sample;
+  for (long k = 0; k < frames; ++k) {
+    const double time = double(k) / fps;
+    while (!take.finished() && take.time() < time - 1e-9) take.step();
+    take.sample(time, time, sample);
+    out << (k > 0 ? ",[" : "[");
+    for (size_t i = 0; i < sample.poses.size(); ++i) {
+      const BodyPose& pose = sample.poses[i];
+      const physics::Quat& q = pose.orientation;
+      const double values[7] = {pose.position.x(), pose.position.y(), pose.position.z(), q.w(), q.x(), q.y(), q.z()};
+      for (int v = 0; v < 7; ++v) {
+        if (i > 0 || v > 0) out << ',';
+        number(out, values[v]);
+      }
+    }
+    out << ']';
+  }
+  out << "]}";
+}
+
+void write_page(const Scene& scene, const std::string& script, std::ostream& out) {
+  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+         "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'\">\n"
+         "<title>impulse page</title>\n<style>\n"
+         "html, body { margin: 0; height: 100%; font-family: 'DejaVu Sans', sans-serif; background: #eaedf4; }\n"
+         "#view { position: absolute; inset: 0 0 56px 0; }\n#view canvas { width: 100%; height: 100%; display: block; }\n"
+         "#bar { position: absolute; left: 0; right: 0; bottom: 0; height: 56px; display: flex; gap: 10px; align-items: center; padding: 0 14px; background: #fff; }\n"
+         "#time { flex: 1; }\n#clock { font-family: 'DejaVu Sans Mono', monospace; min-width: 7em; }\n"
+         "h1 { position: absolute; top: 12px; left: 16px; margin: 0; padding: 8px 12px; font-size: 20px; background: #fff; border-radius: 8px; }\n"
+         "pre#probe, pre#errors { position: absolute; left: -9999px; }\n</style></head><body>\n"
+         "<div id=\"view\"></div>\n<h1 id=\"title\"></h1>\n"
+         "<div id=\"bar\"><button id=\"play\">Play</button><button id=\"back\" title=\"one frame back\">&#9664;</button>"
+         "<button id=\"forward\" title=\"one frame on\">&#9654;</button>"
+         "<input id=\"time\" type=\"range\" min=\"0\" max=\"0\" step=\"1\" value=\"0\" aria-label=\"time\">"
+         "<span id=\"clock\">t = 0.00 s</span><label>speed <select id=\"speed\"><option value=\"0.25\">\u00bc\u00d7</option>"
+         "<option value=\"0.5\">\u00bd\u00d7</option><option value=\"1\" selected>1\u00d7</option><option value=\"2\">2\u00d7</option></select></label></div>\n"
+         "<pre id=\"probe\"></pre><pre id=\"errors\"></pre>\n"
+         "<script id=\"impulse-run\" type=\"application/json\">";
+  write_run_json(scene, out);
+  out << "</script>\n<script>\n";
+  // The bundle's own text may not close its element either ("</script" only in its strings).
+  for (size_t at = 0; at < script.size();) {
+    const size_t end = script.find("</script", at);
+    out.write(script.data() + at, std::streamsize((end == std::string::npos ? script.size() : end) - at));
+    if (end == std::string::npos) break;
+    out << "<\\/script";
+    at = end + 8;
+  }
+  out << "\n</script>\n</body></html>\n";
+}
+
+std::string page_script() {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  std::vector<fs::path> places;
+  const fs::path self = fs::read_symlink("/proc/self/exe", error);
+  if (!error) places.push_back(self.parent_path().parent_path() / "share" / "impulse" / "web" / "page.js");
+  places.push_back(IMPULSE_BUILD_PAGE_SCRIPT);
+  for (const fs::path& place : places) {
+    std::ifstream in(place, std::ios::binary);
+    if (!in) continue;
+    std::ostringstream script;
+    script << in.rdbuf();
+    return script.str();
+  }
+  throw std::runtime_error(std::string("the page's viewer is not built (") + IMPULSE_BUILD_PAGE_SCRIPT +
+                           "): run scripts/build.sh, which bundles web/ with npm");
+}
+
+}  // namespace impulse::demos

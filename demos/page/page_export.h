@@ -1,0 +1,23 @@
+// A scene's interactive page (`impulse export`): the scene run once as the film runs it
+// (WorldTake), each video frame's poses written as JSON into one HTML file that holds the viewer
+// (web/: three.js, bundled at build time) and fetches nothing.
+#pragma once
+#include "demos/scene/scene.h"
+
+#include <ostream>
+#include <string>
+
+namespace impulse::demos {
+
+// The page's JSON: title, frame rate, camera, the bodies (shape, size, colour; a hull's or mesh's
+// triangles in its frame) and per frame every body's position and orientation (x y z, w x y z).
+void write_run_json(const Scene& scene, std::ostream& out);
+
+// The whole page: `script` is the viewer's bundle (page_script()).
+void write_page(const Scene& scene, const std::string& script, std::ostream& out);
+
+// The viewer's bundle: <prefix>/share/impulse/web/page.js beside an installed program, else the
+// build tree's. Throws std::runtime_error saying how to build it when neither is there.
+std::string page_script();
+
+}  // namespace impulse::demos

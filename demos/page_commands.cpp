@@ -1,0 +1,62 @@
+// `impulse export`: a scene into its interactive page, one HTML file that plays anywhere offline.
+#include "demos/command.h"
+#include "demos/command_options.h"
+#include "demos/page/page_export.h"
+#include "render/part_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+namespace impulse::demos {
+namespace {
+
+struct ExportArguments {
+  std::string scene_path;
+  std::string out_path;  // -o; empty: out/NAME.html
+  SceneArguments scene;
+};
+
+int export_page(const ExportArguments& arguments) {
+  namespace fs = std::filesystem;
+  const Scene scene = load(SceneFile(arguments.scene_path), arguments.scene, false);
+  const std::string script = page_script();
+  const std::string path = arguments.out_path.empty()
+                               ? (fs::path("out") / fs::path(arguments.scene_path).stem()).string() + ".html"
+                               : arguments.out_path;
+  std::error_code error;
+  if (const fs::path parent = fs::path(path).parent_path(); !parent.empty()) fs::create_directories(parent, error);
+  render::PartFile part(path);
+  std::ofstream out(part.part_path(), std::ios::binary | std::ios::trunc);
+  if (!out) throw render::OutputError("cannot open " + part.part_path() + " for writing: " + std::strerror(errno));
+  write_page(scene, script, out);
+  out.close();
+  if (!out) throw render::OutputError("cannot write " + part.part_path() + ": " + std::strerror(errno));
+  part.commit();
+  std::fprintf(stderr, "wrote %s\n", path.c_str());
+  return 0;
+}
+
+const std::string kExportFooter =
+    "\nThe page holds the scene's one run (each video frame's poses) and its viewer (three.js): open it\n"
+    "from disk in any browser, offline; play, pause, scrub, step a frame, change the speed, and orbit\n"
+    "(drag), zoom (wheel) and pan (right drag) from the scene's camera.\n" +
+    examples_footer("  impulse export assets/scenes/bounce.toml                # out/bounce.html\n"
+                    "  impulse export assets/scenes/s5_half_pipe.toml -o half_pipe.html\n"
+                    "  impulse export scene.toml --set body[ball].restitution=0.5 -o bouncier.html\n");
+
+}  // namespace
+
+void add_export_command(Commands& commands) {
+  auto arguments = std::make_shared<ExportArguments>();
+  CLI::App* command = commands.add("export", "Write a scene's interactive page: one HTML file to play and orbit in a browser",
+                                   kExportFooter, [arguments](const Invocation&) { return export_page(*arguments); });
+  command->add_option("scene", arguments->scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
+  command->add_option("-o,--output", arguments->out_path, "The page (.html); default out/NAME.html");
+  add_scene_options(command, arguments->scene);
+}
+
+}  // namespace impulse::demos
