@@ -46,6 +46,16 @@ void text(std::ostream& out, const std::string& value) {
   out << '"';
 }
 
+// ",value" with `digits` decimals, its trailing zeros (and a bare point) left out; "-0" is "0".
+void fixed(std::string& out, double value, int digits) {
+  char text[48] = ",";
+  int length = 1 + std::snprintf(text + 1, sizeof text - 1, "%.*f", digits, std::isfinite(value) ? value : 0.0);
+  while (length > 1 && text[length - 1] == '0') --length;
+  if (text[length - 1] == '.') --length;
+  if (length == 1 || (length == 3 && text[1] == '-' && text[2] == '0')) text[1] = '0', length = 2;
+  out.append(text, size_t(length));
+}
+
 const char* shape_name(physics::ShapeType type) {
   switch (type) {
     case physics::ShapeType::sphere: return "sphere";
@@ -128,27 +138,52 @@ void write_run_json(const Scene& scene, std::ostream& out) {
   vector(out, scene.camera.target.cast<double>());
   out << ",\"fov_y_degrees\":";
   number(out, scene.camera.fov_y_degrees);
-  out << "},\"bodies\":[";
+  out << "},\"captions\":[";
+  bool first_caption = true;
+  for (const CaptionCue& caption : scene.captions) {
+    if (caption.pane > 1) continue;  // the first pane's, as the page plays the file's own values
+    out << (first_caption ? "" : ",") << "{\"text\":";
+    text(out, caption.text);
+    out << ",\"start\":";
+    number(out, caption.start);
+    out << ",\"end\":";
+    number(out, std::min(caption.end, scene.duration));
+    out << '}';
+    first_caption = false;
+  }
+  out << "],\"bodies\":[";
   const std::vector<physics::Body>& bodies = take.bodies();
   for (size_t i = 0; i < bodies.size(); ++i) {
     if (i > 0) out << ',';
     body_json(out, bodies[i], scene.colours[i]);
   }
+  // Frames: per frame, the bodies whose written pose differs from the frame before (all of them in
+  // the first), each as its index and x y z, w x y z: a body at rest or asleep costs nothing.
+  // Positions to 1e-5 m, orientations to 1e-6.
   out << "],\"frames\":[";
   FrameSample sample;
+  std::vector<std::string> last(bodies.size());
   for (long k = 0; k < frames; ++k) {
     const double time = double(k) / fps;
     while (!take.finished() && take.time() < time - 1e-9) take.step();
     take.sample(time, time, sample);
     out << (k > 0 ? ",[" : "[");
+    bool first = true;
     for (size_t i = 0; i < sample.poses.size(); ++i) {
       const BodyPose& pose = sample.poses[i];
       const physics::Quat& q = pose.orientation;
-      const double values[7] = {pose.position.x(), pose.position.y(), pose.position.z(), q.w(), q.x(), q.y(), q.z()};
-      for (int v = 0; v < 7; ++v) {
-        if (i > 0 || v > 0) out << ',';
-        number(out, values[v]);
-      }
+      std::string written;
+      fixed(written, pose.position.x(), 5);
+      fixed(written, pose.position.y(), 5);
+      fixed(written, pose.position.z(), 5);
+      fixed(written, q.w(), 6);
+      fixed(written, q.x(), 6);
+      fixed(written, q.y(), 6);
+      fixed(written, q.z(), 6);
+      if (written == last[i]) continue;
+      out << (first ? "" : ",") << i << written;
+      first = false;
+      last[i] = std::move(written);
     }
     out << ']';
   }
@@ -165,8 +200,11 @@ void write_page(const Scene& scene, const std::string& script, std::ostream& out
          "#bar { position: absolute; left: 0; right: 0; bottom: 0; height: 56px; display: flex; gap: 10px; align-items: center; padding: 0 14px; background: #fff; }\n"
          "#time { flex: 1; }\n#clock { font-family: 'DejaVu Sans Mono', monospace; min-width: 7em; }\n"
          "h1 { position: absolute; top: 12px; left: 16px; margin: 0; padding: 8px 12px; font-size: 20px; background: #fff; border-radius: 8px; }\n"
-         "pre#probe, pre#errors { position: absolute; left: -9999px; }\n</style></head><body>\n"
-         "<div id=\"view\"></div>\n<h1 id=\"title\"></h1>\n"
+         "#caption { position: absolute; left: 50%; bottom: 76px; transform: translateX(-50%); max-width: 80%; padding: 8px 16px; border-radius: 8px; background: rgba(40, 42, 48, 0.85); color: #fff; font-size: 18px; text-align: center; }\n"
+         "#caption:empty { display: none; }\n"
+         "pre#probe, pre#errors { position: absolute; left: -9999px; }\n"
+         "body.bare #view { inset: auto; left: 0; top: 0; } body.bare #bar, body.bare h1, body.bare #caption { display: none; }\n</style></head><body>\n"
+         "<div id=\"view\"></div>\n<h1 id=\"title\"></h1>\n<div id=\"caption\"></div>\n"
          "<div id=\"bar\"><button id=\"play\">Play</button><button id=\"back\" title=\"one frame back\">&#9664;</button>"
          "<button id=\"forward\" title=\"one frame on\">&#9654;</button>"
          "<input id=\"time\" type=\"range\" min=\"0\" max=\"0\" step=\"1\" value=\"0\" aria-label=\"time\">"

@@ -10,7 +10,8 @@
 namespace impulse::demos {
 
 // The page's JSON: title, frame rate, camera, the bodies (shape, size, colour; a hull's or mesh's
-// triangles in its frame) and per frame every body's position and orientation (x y z, w x y z).
+// triangles in its frame) and per frame the poses of the bodies whose pose changed since the frame
+// before, each as its index then x y z, w x y z.
 void write_run_json(const Scene& scene, std::ostream& out);
 
 // The whole page: `script` is the viewer's bundle (page_script()).

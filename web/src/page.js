@@ -41,26 +41,51 @@ function geometryOf(body) {
   }
 }
 
-// A plane: the ground where it is horizontal, else a thin slab in its colour (as the video draws it).
+// A plane: the ground where it is horizontal (the video's light grey, a line every metre), else a
+// thin slab in its colour whose top face lies in the plane.
 function planeOf(body, material) {
   const n = new THREE.Vector3(...body.normal);
   const size = 400;
+  const ground = n.y > 0.999;
+  if (ground) material.color.setRGB(0.84, 0.85, 0.86, THREE.SRGBColorSpace);
   const mesh = new THREE.Mesh(new THREE.BoxGeometry(size, 0.02, size), material);
   mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), n);
   mesh.position.copy(n.clone().multiplyScalar(body.offset - 0.01));
+  mesh.receiveShadow = true;
+  if (ground) {
+    // A line every metre over 100 m, in metre-long pieces: a line through the near plane is
+    // clipped wrongly by some WebGL implementations (SwiftShader), and these are short.
+    const corners = [];
+    const y = body.offset + 0.003;  // 3 mm above the ground, clear of its depth
+    for (let a = -50; a <= 50; ++a)
+      for (let b = -50; b < 50; ++b) corners.push(a, y, b, a, y, b + 1, b, y, a, b + 1, y, a);
+    const lines = new THREE.BufferGeometry();
+    lines.setAttribute('position', new THREE.Float32BufferAttribute(corners, 3));
+    scene.add(new THREE.LineSegments(lines, new THREE.LineBasicMaterial({ color: 0xb0b4bc })));
+  }
   return mesh;
 }
 
 const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
 renderer.setPixelRatio(window.devicePixelRatio);
+renderer.shadowMap.enabled = true;
 const view = document.getElementById('view');
 view.appendChild(renderer.domElement);
 const scene = new THREE.Scene();
-scene.background = new THREE.Color().setRGB(0.92, 0.93, 0.96, THREE.SRGBColorSpace);
+scene.background = new THREE.Color().setRGB(0.92, 0.94, 0.97, THREE.SRGBColorSpace);  // the video's sky
 scene.add(new THREE.HemisphereLight(0xffffff, 0x8090a0, 1.6));
+// High, so that a shadow falls nearly straight down, as in the video; its shadow camera spans the
+// scene's camera's view.
 const sun = new THREE.DirectionalLight(0xffffff, 1.8);
-sun.position.set(4, 10, 6);
-scene.add(sun);
+sun.castShadow = true;
+sun.shadow.bias = -0.0005;
+sun.shadow.normalBias = 0.02;
+sun.shadow.mapSize.set(2048, 2048);
+const reach = 1.5 * new THREE.Vector3(...run.camera.position).distanceTo(new THREE.Vector3(...run.camera.target));
+sun.position.set(run.camera.target[0] + 0.3 * reach, run.camera.target[1] + 2 * reach, run.camera.target[2] + 0.5 * reach);
+sun.target.position.set(...run.camera.target);
+Object.assign(sun.shadow.camera, { left: -reach, right: reach, top: reach, bottom: -reach, near: 0.1, far: 5 * reach });
+scene.add(sun, sun.target);
 
 const camera = new THREE.PerspectiveCamera(run.camera.fov_y_degrees, 16 / 9, 0.05, 2000);
 camera.position.set(...run.camera.position);
@@ -74,18 +99,35 @@ const objects = run.bodies.map((body) => {
                                                      side: body.shape === 'mesh' ? THREE.DoubleSide : THREE.FrontSide });
   const object = body.shape === 'plane' ? planeOf(body, material) : new THREE.Mesh(geometryOf(body), material);
   object.name = body.name;
+  if (body.shape !== 'plane') {
+    object.castShadow = true;
+    object.receiveShadow = true;
+    // The sides of a box's or a hull's faces, as the video outlines them (a mesh's where it folds).
+    if (body.shape === 'box' || body.shape === 'hull' || body.shape === 'mesh')
+      object.add(new THREE.LineSegments(new THREE.EdgesGeometry(object.geometry, body.shape === 'mesh' ? 20 : 5),
+                                        new THREE.LineBasicMaterial({ color: 0x2a2d33 })));
+  }
   scene.add(object);
   return object;
 });
 
-// Frame k's poses: per body x, y, z, then the quaternion w, x, y, z.
+// Every frame's poses, decoded once: the run lists per frame the bodies that moved (index, then
+// x y z, w x y z); a body keeps its pose until it is listed again.
+const poses = new Float64Array(frameCount * bodyCount * 7);
+for (let k = 0; k < frameCount; ++k) {
+  const here = k * bodyCount * 7;
+  if (k > 0) poses.copyWithin(here, here - bodyCount * 7, here);
+  const listed = run.frames[k];
+  for (let at = 0; at < listed.length; at += 8) poses.set(listed.slice(at + 1, at + 8), here + 7 * listed[at]);
+}
+
 function showFrame(k) {
-  const frame = run.frames[k];
+  const here = k * bodyCount * 7;
   for (let i = 0; i < bodyCount; ++i) {
     if (run.bodies[i].shape === 'plane') continue;
-    const p = 7 * i;
-    objects[i].position.set(frame[p], frame[p + 1], frame[p + 2]);
-    objects[i].quaternion.set(frame[p + 4], frame[p + 5], frame[p + 6], frame[p + 3]);
+    const p = here + 7 * i;
+    objects[i].position.set(poses[p], poses[p + 1], poses[p + 2]);
+    objects[i].quaternion.set(poses[p + 4], poses[p + 5], poses[p + 6], poses[p + 3]);
   }
 }
 
@@ -97,10 +139,14 @@ slider.max = String(frameCount - 1);
 let frame = 0;
 let playing = false;
 let started = 0;   // ms: when frame 0 would have been shown at this speed
+const caption = document.getElementById('caption');
 function setFrame(k) {
   frame = Math.max(0, Math.min(frameCount - 1, k));
   slider.value = String(frame);
-  clock.textContent = 't = ' + (frame / run.fps).toFixed(2) + ' s';
+  const time = frame / run.fps;
+  clock.textContent = 't = ' + time.toFixed(2) + ' s';
+  const shown = run.captions.find((c) => c.start <= time && time < c.end);
+  caption.textContent = shown ? shown.text : '';
   showFrame(frame);
 }
 function play(on) {
@@ -141,19 +187,31 @@ renderer.setAnimationLoop(() => {
 });
 setFrame(0);
 
-// The test hook: the drawn poses (each object's world matrix) at the frames of the asked moments.
+// The test hook: the drawn poses (each object's world matrix) at the frames of the asked moments,
+// and where each centre falls in the view (pixels from its top left); `&size=854x480` hides the
+// controls and makes the view that size, as the video's frame is.
 const probe = /#probe=([0-9.,]+)/.exec(window.location.hash);
 if (probe) {
-  const lines = [];
+  const size = /&size=(\d+)x(\d+)/.exec(window.location.hash);
+  if (size) {
+    document.body.classList.add('bare');
+    view.style.width = size[1] + 'px';
+    view.style.height = size[2] + 'px';
+    resize();
+  }
+  const lines = ['VIEW ' + view.clientWidth + ' ' + view.clientHeight];
   for (const text of probe[1].split(',')) {
     const k = Math.round(Number(text) * run.fps);
     setFrame(k);
     scene.updateMatrixWorld(true);
+    camera.updateMatrixWorld(true);  // not in the scene: render() would, but nothing has rendered yet
     objects.forEach((object, i) => {
       if (run.bodies[i].shape === 'plane') return;
       const position = new THREE.Vector3(), rotation = new THREE.Quaternion(), scale = new THREE.Vector3();
       object.matrixWorld.decompose(position, rotation, scale);
       lines.push(['POSE', (k / run.fps).toFixed(6), position.x, position.y, position.z, rotation.w, rotation.x, rotation.y, rotation.z, run.bodies[i].name].join(' '));
+      const seen = position.clone().project(camera);
+      lines.push(['PIXEL', (k / run.fps).toFixed(6), (seen.x + 1) / 2 * view.clientWidth, (1 - seen.y) / 2 * view.clientHeight, run.bodies[i].name].join(' '));
     });
   }
   renderer.render(scene, camera);
