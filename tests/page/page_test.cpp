@@ -117,14 +117,6 @@ Drawn opened(const fs::path& page, const fs::path& dir, const std::string& momen
   return drawn;
 }
 
-std::vector<std::string> catalogue_scenes() {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(fs::path(IMPULSE_SOURCE_DIR) / "assets/scenes"))
-    if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 class EveryScene : public ::testing::TestWithParam<std::string> {};
 
 // Each catalogue scene's page, opened from disk at 854 x 480: at a third and two thirds of the
@@ -182,7 +174,7 @@ TEST_P(EveryScene, ThePageDrawsEachBodyWhereTheTraceAndTheVideosCameraPutIt) {
   EXPECT_GE(compared, 1) << "bodies compared: the moments are no steps of the trace";
 }
 
-INSTANTIATE_TEST_SUITE_P(Catalogue, EveryScene, ::testing::ValuesIn(catalogue_scenes()),
+INSTANTIATE_TEST_SUITE_P(Catalogue, EveryScene, ::testing::ValuesIn(testing::catalogue_scene_names()),
                          [](const ::testing::TestParamInfo<std::string>& scene) { return scene.param; });
 
 // A scene that cannot be read writes no page, and says where it is wrong.

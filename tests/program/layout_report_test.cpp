@@ -4,6 +4,7 @@
 // one entry per video frame, with each pane's bodies; it is written whole or not at all.
 #include "tests/program/in_process.h"
 #include "tests/program/program_test_files.h"
+#include "tests/support/scene_scratch.h"
 #include "demos/scene/scene_file.h"
 
 #include <nlohmann/json.hpp>
@@ -92,14 +93,6 @@ void expect_every_frame(const json& report, int panes) {
   EXPECT_EQ(panes_seen.size(), size_t(panes));
 }
 
-std::vector<std::string> catalogue_scenes() {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(fs::path(IMPULSE_SOURCE_DIR) / "assets/scenes"))
-    if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 class EveryScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EveryScene, NothingCoversAnything) {
@@ -117,7 +110,7 @@ TEST_P(EveryScene, NothingCoversAnything) {
   expect_every_frame(report, int(std::max<size_t>(compared, 1)));
 }
 
-INSTANTIATE_TEST_SUITE_P(Catalogue, EveryScene, ::testing::ValuesIn(catalogue_scenes()),
+INSTANTIATE_TEST_SUITE_P(Catalogue, EveryScene, ::testing::ValuesIn(testing::catalogue_scene_names()),
                          [](const ::testing::TestParamInfo<std::string>& scene) { return scene.param; });
 
 TEST(LayoutReport, ComparisonsOfTwoAndFourPanesKeepEveryElementApartAndNameEveryPane) {

@@ -1,10 +1,12 @@
 // Helpers for the tests that render whole scenes: a scratch directory, a scene file written from
 // text and loaded, and a pixel of a frame.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "demos/scene/scene_file.h"
 #include "render/frame.h"
@@ -17,6 +19,15 @@ inline std::filesystem::path scratch(const std::string& suite, const std::string
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+// The catalogue's scenes by name (assets/scenes/NAME.toml), in order: a parameter per scene.
+inline std::vector<std::string> catalogue_scene_names() {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(IMPULSE_SOURCE_DIR) / "assets/scenes"))
+    if (entry.path().extension() == ".toml") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 // `text` written to DIR/scene.toml and loaded.
