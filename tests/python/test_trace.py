@@ -22,7 +22,7 @@ def g(value):
 
 
 @pytest.mark.parametrize("scene_file", ["assets/scenes/bounce.toml", "assets/scenes/s4_angular.toml", "assets/scenes/s5_shapes.toml",
-                                        "assets/scenes/s5_hulls.toml"])
+                                        "assets/scenes/s5_hulls.toml", "assets/scenes/s5_half_pipe.toml"])
 def test_the_trace_is_what_impulse_simulate_writes(program, tmp_path, scene_file):
     bodies_csv, contacts_csv, world_csv = (str(tmp_path / n) for n in ("bodies.csv", "contacts.csv", "world.csv"))
     subprocess.run([program, "simulate", scene_file, "--every", "3", "--trace", bodies_csv, "--contacts", contacts_csv,
