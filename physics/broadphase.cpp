@@ -17,7 +17,7 @@ Aabb body_aabb(const Body& body, Real margin) {
   const Shape& s = body.shape;
   if (s.type == ShapeType::mesh) {  // its tree's box (the slabs behind the triangles too), turned
     const Mat3 rotation = body.orientation.toRotationMatrix();
-    const MeshNode& root = s.mesh->nodes[0];
+    const MeshNode& root = s.mesh()->nodes[0];
     Vec3 low = Vec3::Constant(std::numeric_limits<Real>::infinity()), high = -low;
     for (int k = 0; k < 8; ++k) {
       const Vec3 x = rotation * Vec3(k & 1 ? root.high.x() : root.low.x(), k & 2 ? root.high.y() : root.low.y(),
@@ -29,7 +29,7 @@ Aabb body_aabb(const Body& body, Real margin) {
   if (s.type == ShapeType::hull) {  // not symmetric: its corners' extremes
     const Mat3 rotation = body.orientation.toRotationMatrix();
     Vec3 low = Vec3::Constant(std::numeric_limits<Real>::infinity()), high = -low;
-    for (const Vec3& p : s.hull->corners) {
+    for (const Vec3& p : s.hull()->corners) {
       const Vec3 x = rotation * p;
       low = low.cwiseMin(x), high = high.cwiseMax(x);
     }

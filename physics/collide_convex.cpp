@@ -51,7 +51,7 @@ Vec3 local_support(const Shape& s, const Vec3& d) {
       return across > Real(1e-12) ? Vec3(s.radius * d.x() / across, y, s.radius * d.z() / across) : Vec3(0, y, 0);
     }
     case ShapeType::hull: {
-      const std::vector<Vec3>& corners = s.hull->corners;
+      const std::vector<Vec3>& corners = s.hull()->corners;
       size_t best = 0;
       for (size_t i = 1; i < corners.size(); ++i)
         if (corners[i].dot(d) > corners[best].dot(d)) best = i;
@@ -154,7 +154,7 @@ Feature supporting_feature(const Body& body, const Mat3& rotation, const Vec3& d
       return f;
     }
     case ShapeType::hull: {  // the face most along d: its corners, or its quad where it has more than four
-      const Hull& hull = *s.hull;
+      const Hull& hull = *s.hull();
       int best = 0;
       for (int k = 1; k < int(hull.faces.size()); ++k)
         if (hull.faces[k].normal.dot(d) > hull.faces[best].normal.dot(d)) best = k;
@@ -339,7 +339,7 @@ int collide_convex(const Body& a, int ia, const Body& b, int ib, Real margin, st
       for (int k = 0; k < 3; ++k) consider(rotation.col(k)), consider(-rotation.col(k));
     if (body.shape.type == ShapeType::cylinder) consider(rotation.col(1)), consider(-rotation.col(1));
     if (body.shape.type == ShapeType::hull)  // A leaves B against A's face's normal, along B's
-      for (const HullFace& face : body.shape.hull->faces) consider(rotation * face.normal * (side == 0 ? -1 : 1));
+      for (const HullFace& face : body.shape.hull()->faces) consider(rotation * face.normal * (side == 0 ? -1 : 1));
   }
   if (separation > margin) return 0;
   const Real epa_separation = separation;

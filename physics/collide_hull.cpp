@@ -24,7 +24,7 @@ Vec3 nearest_on_segment(const Vec3& p, const Vec3& q, const Vec3& x) {
 // centre is in front of (on a face where the centre's shadow falls inside it, else on its sides);
 // inside, out through the face nearest the centre.
 int collide_sphere_hull(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
-  const Hull& hull = *b.shape.hull;
+  const Hull& hull = *b.shape.hull();
   const Mat3 rotation = b.orientation.toRotationMatrix();
   const Vec3 centre = rotation.transpose() * (a.position - b.position);
   const Real radius = a.shape.radius;
@@ -79,7 +79,7 @@ int collide_sphere_hull(const Body& a, int ia, const Body& b, int ib, Real margi
 // (a face tipped onto the plane).
 int collide_hull_plane(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
   constexpr Real kDeeper = 0.0005;  // m
-  const Hull& hull = *a.shape.hull;
+  const Hull& hull = *a.shape.hull();
   const Mat3 rotation = a.orientation.toRotationMatrix();
   const Vec3& n = b.shape.normal;
   const Vec3 down = rotation.transpose() * -n;

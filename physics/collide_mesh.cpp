@@ -110,7 +110,7 @@ int merge(const std::vector<Contact>& found, const Vec3& origin, std::vector<Con
 // in front of: along the line to the nearest point on a convex seam or corner, else along the
 // face's normal.
 int collide_sphere_mesh(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
-  const Mesh& mesh = *b.shape.mesh;
+  const Mesh& mesh = *b.shape.mesh();
   const Mat3 rotation = b.orientation.toRotationMatrix();
   Vec3 low, high;
   box_in_mesh(a, b, rotation, margin, low, high);
@@ -150,7 +150,7 @@ int collide_sphere_mesh(const Body& a, int ia, const Body& b, int ib, Real margi
 // normal is not the face's and the seam or corner nearest the deepest point is not convex, A
 // against the triangle's plane.
 int collide_convex_mesh(const Body& a, int ia, const Body& b, int ib, Real margin, std::vector<Contact>& out) {
-  const Mesh& mesh = *b.shape.mesh;
+  const Mesh& mesh = *b.shape.mesh();
   const Mat3 rotation = b.orientation.toRotationMatrix();
   Vec3 low, high;
   box_in_mesh(a, b, rotation, margin, low, high);
@@ -159,7 +159,7 @@ int collide_convex_mesh(const Body& a, int ia, const Body& b, int ib, Real margi
   slab.orientation = b.orientation;
   mesh.query(low, high, [&](int t) {
     const MeshTriangle& tri = mesh.triangles[t];
-    slab.shape = Shape::convex(std::shared_ptr<const Hull>(b.shape.mesh, &mesh.slabs[t]));
+    slab.shape = Shape::convex(std::shared_ptr<const Hull>(b.shape.data, &mesh.slabs[t]));
     slab.position = b.position + rotation * mesh.slab_centres[t];
     const Vec3 face = rotation * tri.normal;
     if (face.dot(a.position - b.position) - face.dot(rotation * mesh.vertices[tri.corners[0]]) < 0) return;  // A's centre behind its front

@@ -18,7 +18,7 @@ Real shape_volume(const Shape& shape) {
     case ShapeType::capsule:
       return std::numbers::pi * shape.radius * shape.radius * (2 * shape.half_height + Real(4) / 3 * shape.radius);
     case ShapeType::cylinder: return std::numbers::pi * shape.radius * shape.radius * (2 * shape.half_height);
-    case ShapeType::hull: return shape.hull->volume;
+    case ShapeType::hull: return shape.hull()->volume;
     case ShapeType::mesh:
     case ShapeType::plane: return 0;
   }
@@ -60,7 +60,7 @@ Mat3 shape_unit_inertia(const Shape& shape) {
       const Real r2 = shape.radius * shape.radius, h2 = shape.half_height * shape.half_height;
       return about_y(r2 / 2, r2 / 4 + h2 / 3);
     }
-    case ShapeType::hull: return shape.hull->unit_inertia;
+    case ShapeType::hull: return shape.hull()->unit_inertia;
     case ShapeType::mesh:
     case ShapeType::plane: return Mat3::Zero();
   }
@@ -93,7 +93,7 @@ Mat3 shape_unit_shell_inertia(const Shape& shape) {
       const Real r2 = shape.radius * shape.radius, h2 = shape.half_height * shape.half_height;
       return about_y(r2, r2 / 2 + h2 / 3);
     }
-    case ShapeType::hull: return shape.hull->unit_shell_inertia;
+    case ShapeType::hull: return shape.hull()->unit_shell_inertia;
     case ShapeType::mesh:
     case ShapeType::plane: return Mat3::Zero();
   }
@@ -110,12 +110,12 @@ Real reach_along(const Shape& shape, const Quat& orientation, const Vec3& d) {
     case ShapeType::cylinder: return shape.half_height * along + shape.radius * across;
     case ShapeType::hull: {
       Real reach = -std::numeric_limits<Real>::infinity();
-      for (const Vec3& p : shape.hull->corners) reach = std::max(reach, p.dot(local));
+      for (const Vec3& p : shape.hull()->corners) reach = std::max(reach, p.dot(local));
       return reach;
     }
     case ShapeType::mesh: {
       Real reach = -std::numeric_limits<Real>::infinity();
-      for (const Vec3& p : shape.mesh->vertices) reach = std::max(reach, p.dot(local));
+      for (const Vec3& p : shape.mesh()->vertices) reach = std::max(reach, p.dot(local));
       return reach;
     }
     case ShapeType::plane: return 0;
@@ -131,12 +131,12 @@ Real bounding_radius(const Shape& shape) {
     case ShapeType::cylinder: return std::sqrt(shape.radius * shape.radius + shape.half_height * shape.half_height);
     case ShapeType::hull: {
       Real farthest = 0;
-      for (const Vec3& p : shape.hull->corners) farthest = std::max(farthest, p.norm());
+      for (const Vec3& p : shape.hull()->corners) farthest = std::max(farthest, p.norm());
       return farthest;
     }
     case ShapeType::mesh: {
       Real farthest = 0;
-      for (const Vec3& p : shape.mesh->vertices) farthest = std::max(farthest, p.norm());
+      for (const Vec3& p : shape.mesh()->vertices) farthest = std::max(farthest, p.norm());
       return farthest;
     }
     case ShapeType::plane: return 0;
@@ -152,7 +152,7 @@ Real thinnest_half_size(const Shape& shape) {
     case ShapeType::cylinder: return std::min(shape.radius, shape.half_height);
     case ShapeType::hull: {  // the nearest face from the centre
       Real nearest = std::numeric_limits<Real>::infinity();
-      for (const HullFace& face : shape.hull->faces) nearest = std::min(nearest, face.offset);
+      for (const HullFace& face : shape.hull()->faces) nearest = std::min(nearest, face.offset);
       return nearest;
     }
     case ShapeType::mesh:
@@ -178,10 +178,10 @@ std::string shape_problem(const Shape& shape) {
         return "height must be a finite number > 0, got " + num(2 * shape.half_height);
       return {};
     case ShapeType::hull:
-      if (!shape.hull || shape.hull->faces.size() < 4 || !(shape.hull->volume > 0)) return "a hull must enclose a volume";
+      if (!shape.hull() || shape.hull()->faces.size() < 4 || !(shape.hull()->volume > 0)) return "a hull must enclose a volume";
       return {};
     case ShapeType::mesh:
-      if (!shape.mesh || shape.mesh->triangles.empty()) return "a mesh needs at least one triangle";
+      if (!shape.mesh() || shape.mesh()->triangles.empty()) return "a mesh needs at least one triangle";
       return {};
     case ShapeType::plane:
       if (!is_finite(shape.normal) || shape.normal.norm() < Real(1e-9)) return "normal must be a non-zero finite vector";

@@ -26,15 +26,21 @@ struct Shape {
   Vec3 half_extents{0.5, 0.5, 0.5};    // box
   Vec3 normal{0, 1, 0};                // plane, world space
   Real offset = 0;                     // plane
-  std::shared_ptr<const Hull> hull;    // hull
-  std::shared_ptr<const Mesh> mesh;    // mesh
+  // A hull's Hull or a mesh's Mesh: one pointer for both, so that a Body is 512 bytes, eight cache
+  // lines (a second one made the sleeping heap of boxes 2 % slower).
+  std::shared_ptr<const void> data;
+
+  const Hull* hull() const { return type == ShapeType::hull ? static_cast<const Hull*>(data.get()) : nullptr; }
+  const Mesh* mesh() const { return type == ShapeType::mesh ? static_cast<const Mesh*>(data.get()) : nullptr; }
+  std::shared_ptr<const Hull> shared_hull() const { return {data, hull()}; }  // sharing data's ownership
+  std::shared_ptr<const Mesh> shared_mesh() const { return {data, mesh()}; }
 
   static Shape sphere(Real r) { Shape s; s.type = ShapeType::sphere; s.radius = r; return s; }
   static Shape box(const Vec3& h) { Shape s; s.type = ShapeType::box; s.half_extents = h; return s; }
   static Shape capsule(Real r, Real half) { Shape s; s.type = ShapeType::capsule; s.radius = r; s.half_height = half; return s; }
   static Shape cylinder(Real r, Real half) { Shape s; s.type = ShapeType::cylinder; s.radius = r; s.half_height = half; return s; }
-  static Shape convex(std::shared_ptr<const Hull> h) { Shape s; s.type = ShapeType::hull; s.hull = std::move(h); return s; }
-  static Shape surface(std::shared_ptr<const Mesh> m) { Shape s; s.type = ShapeType::mesh; s.mesh = std::move(m); return s; }
+  static Shape convex(std::shared_ptr<const Hull> h) { Shape s; s.type = ShapeType::hull; s.data = std::move(h); return s; }
+  static Shape surface(std::shared_ptr<const Mesh> m) { Shape s; s.type = ShapeType::mesh; s.data = std::move(m); return s; }
   static Shape plane(const Vec3& n, Real d) { Shape s; s.type = ShapeType::plane; s.normal = n; s.offset = d; return s; }
 };
 

@@ -70,7 +70,7 @@ void add_body_boxes(const std::vector<physics::Body>& bodies, const std::vector<
         box = box_box(poses[i], physics::Vec3(shape.radius, shape.half_height + shape.radius, shape.radius), view);
         break;
       case physics::ShapeType::hull:
-        if (shape.hull) box = corners_box(poses[i], shape.hull->corners, view);
+        if (shape.hull()) box = corners_box(poses[i], shape.hull()->corners, view);
         break;
       case physics::ShapeType::mesh:  // a surface, as a plane: what lies on it is what the eye follows
       case physics::ShapeType::plane: break;

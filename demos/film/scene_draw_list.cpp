@@ -184,13 +184,13 @@ render::DrawList scene_draw_list(const Scene& scene, const std::vector<physics::
         break;
       }
       case physics::ShapeType::hull:
-        if (body.shape.hull)
-          list.meshes.push_back({to_float(pose.position), pose.orientation.cast<float>(), hull_triangles(body.shape.hull),
+        if (body.shape.hull())
+          list.meshes.push_back({to_float(pose.position), pose.orientation.cast<float>(), hull_triangles(body.shape.shared_hull()),
                                  colour, sleeping});
         break;
       case physics::ShapeType::mesh:
-        if (body.shape.mesh)
-          list.meshes.push_back({to_float(pose.position), pose.orientation.cast<float>(), mesh_triangles(body.shape.mesh), colour, false});
+        if (body.shape.mesh())
+          list.meshes.push_back({to_float(pose.position), pose.orientation.cast<float>(), mesh_triangles(body.shape.shared_mesh()), colour, false});
         break;
       case physics::ShapeType::plane:
         // The renderer draws one ground; a horizontal plane becomes it, any other a slab.

@@ -80,12 +80,12 @@ void triangle_corners(std::ostream& out, const physics::Shape& shape) {
     }
   };
   if (shape.type == physics::ShapeType::hull) {  // each face fanned from its first corner
-    const physics::Hull& hull = *shape.hull;
+    const physics::Hull& hull = *shape.hull();
     for (const physics::HullFace& face : hull.faces)
       for (int k = 1; k + 1 < face.count; ++k)
         for (const int c : {hull.corner_of(face, 0), hull.corner_of(face, k), hull.corner_of(face, k + 1)}) corner(hull.corners[size_t(c)]);
   } else {
-    const physics::Mesh& mesh = *shape.mesh;
+    const physics::Mesh& mesh = *shape.mesh();
     for (const physics::MeshTriangle& triangle : mesh.triangles)
       for (const int c : triangle.corners) corner(mesh.vertices[size_t(c)]);
   }

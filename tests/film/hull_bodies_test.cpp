@@ -47,7 +47,7 @@ TEST(HullBodies, AHullIsAMeshOfItsFacesTriangles) {
   EXPECT_TRUE(list.boxes.empty() && list.spheres.empty() && list.cylinders.empty());
   for (size_t i = 0; i < 2; ++i) {
     const physics::Body& body = hulls.bodies[i];
-    const physics::Hull& hull = *body.shape.hull;
+    const physics::Hull& hull = *body.shape.hull();
     const render::MeshItem& mesh = list.meshes[i];
     EXPECT_TRUE(mesh.centre.isApprox(body.position.cast<float>()));
     EXPECT_TRUE(mesh.orientation.isApprox(body.orientation.cast<float>()));
@@ -111,7 +111,7 @@ TEST(HullBodies, TheirScreenBoxesAreTheirCornersBoxes) {
   for (size_t i = 0; i < 2; ++i) {
     const physics::Body& body = hulls.bodies[i];
     Eigen::Vector2f low = Eigen::Vector2f::Constant(INFINITY), high = Eigen::Vector2f::Constant(-INFINITY);
-    for (const physics::Vec3& corner : body.shape.hull->corners) {
+    for (const physics::Vec3& corner : body.shape.hull()->corners) {
       const auto at = view.to_pixels((body.position + body.orientation * corner).cast<float>());
       ASSERT_TRUE(at.has_value());
       low = low.cwiseMin(*at);

@@ -356,7 +356,7 @@ inertia = "hollow"
   const physics::Quat turn = rotation_from_degrees(physics::Vec3(0, 90, 0));
   EXPECT_LT((wedge.position - (physics::Vec3(1, 2, 3) + physics::rotate(turn, physics::Vec3(-0.15, -0.05, 0)))).norm(), 1e-12);
   EXPECT_NEAR(physics::shape_volume(wedge.shape), 0.9 * 0.3 * 0.5 / 2, 1e-12);
-  for (const physics::Vec3& corner : wedge.shape.hull->corners) {
+  for (const physics::Vec3& corner : wedge.shape.hull()->corners) {
     const physics::Vec3 in_file = physics::rotate(turn.conjugate(), wedge.position + physics::rotate(wedge.orientation, corner) - physics::Vec3(1, 2, 3));
     EXPECT_NEAR(std::abs(in_file.x()), 0.45, 1e-12);
     EXPECT_NEAR(std::abs(in_file.y()), 0.15, 1e-12);
@@ -366,7 +366,7 @@ inertia = "hollow"
   // the surface's centre: three right triangles of area 1/2 (centres at thirds) and one of area
   // sqrt(3)/2 (its centre at (1/3, 1/3, 1/3)).
   const physics::BodyDef& die = scene.bodies[1];
-  EXPECT_EQ(die.shape.hull->corners.size(), 4u);
+  EXPECT_EQ(die.shape.hull()->corners.size(), 4u);
   const double right = 0.5, slanted = std::sqrt(3.0) / 2;
   const double each = (2 * right * (1.0 / 3) + slanted * (1.0 / 3)) / (3 * right + slanted);
   EXPECT_LT((die.position - physics::Vec3::Constant(each)).norm(), 1e-12);
@@ -389,8 +389,8 @@ rotation = [0, 90, 0]
   const physics::BodyDef& ramp = scene.bodies[0];
   ASSERT_EQ(ramp.shape.type, physics::ShapeType::mesh);
   EXPECT_TRUE(ramp.is_static);
-  ASSERT_EQ(ramp.shape.mesh->triangles.size(), 2u);
-  EXPECT_TRUE(ramp.shape.mesh->vertices[3].isApprox(physics::Vec3(2, 2, -2)));
+  ASSERT_EQ(ramp.shape.mesh()->triangles.size(), 2u);
+  EXPECT_TRUE(ramp.shape.mesh()->vertices[3].isApprox(physics::Vec3(2, 2, -2)));
   EXPECT_LT((ramp.position - physics::Vec3(1, 0, 0)).norm(), 1e-12);
   EXPECT_LT((physics::rotate(ramp.orientation, physics::Vec3::UnitX()) - physics::Vec3(0, 0, -1)).norm(), 1e-12);
   try {
