@@ -41,8 +41,8 @@ void box_in_mesh(const Body& a, const Body& mesh, const Mat3& rotation, Real mar
 
 // Removes from `out` each point that lies on the segment between two others (within
 // kOnSegment): where a triangle's side crosses a face or a line that touches two triangles, the
-// crossing holds nothing that its ends do not, and as it moves along with the body it shifts the
-// load between them (a can lying across a seam rocked and yawed).
+// crossing holds nothing that its ends do not, and as it moves along with the body it would shift
+// the load between them, rocking a can that lies across a seam.
 void drop_between(std::vector<Contact>& out) {
   for (size_t i = 0; i < out.size();) {
     bool between = false;

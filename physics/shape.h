@@ -26,8 +26,8 @@ struct Shape {
   Vec3 half_extents{0.5, 0.5, 0.5};    // box
   Vec3 normal{0, 1, 0};                // plane, world space
   Real offset = 0;                     // plane
-  // A hull's Hull or a mesh's Mesh: one pointer for both, so that a Body is 512 bytes, eight cache
-  // lines (a second one made the sleeping heap of boxes 2 % slower).
+  // A hull's Hull or a mesh's Mesh: one pointer for both, so that a Body stays 512 bytes, eight
+  // cache lines.
   std::shared_ptr<const void> data;
 
   const Hull* hull() const { return type == ShapeType::hull ? static_cast<const Hull*>(data.get()) : nullptr; }
