@@ -163,6 +163,24 @@ TEST(Meshes, AFlatMeshHasOneNormalATriangleAndOutlinesOnlyTheFacesSides) {
   EXPECT_EQ(diagonals, 2 * 3);  // each rectangle's diagonal, seen from both its triangles
 }
 
+// Two triangles sharing a side draw a line along it only where they meet at 5 degrees or more: a
+// surface made of gently turned triangles (a half-pipe's strips) reads as one surface, a
+// polyhedron's faces stay outlined.
+TEST(Meshes, TrianglesMeetingWithinFiveDegreesDrawNoLineBetweenThem) {
+  for (const float degrees : {0.0f, 1.25f, 4.5f, 5.5f, 22.5f}) {
+    SCOPED_TRACE(degrees);
+    const float turn = degrees * 3.14159265f / 180;
+    // (0,0,0)-(0,0,1) is the shared side; the second triangle turns about it by `turn`.
+    const std::vector<Vec3f> corners{{0, 0, 0}, {0, 0, 1}, {-1, 0, 0},
+                                     {0, 0, 1}, {0, 0, 0}, {std::cos(turn), std::sin(turn), 0}};
+    const render::MeshData mesh = render::make_flat_mesh(corners);
+    ASSERT_EQ(mesh.vertices.size(), 6u);
+    // The first triangle's side across from its corner 2 is the shared one.
+    const bool outlined = mesh.vertices[mesh.indices[0]].outline[2] == 0.0f;
+    EXPECT_EQ(outlined, degrees >= 5.0f);
+  }
+}
+
 // Each face the camera sees is red where it projects, one shade across (sampled well inside it),
 // and the faces turned differently to the light differ; where two faces meet, a dark line runs
 // along their common side, but none along the diagonal that splits a rectangle into two triangles.
