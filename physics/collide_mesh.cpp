@@ -159,10 +159,10 @@ int collide_convex_mesh(const Body& a, int ia, const Body& b, int ib, Real margi
   slab.orientation = b.orientation;
   mesh.query(low, high, [&](int t) {
     const MeshTriangle& tri = mesh.triangles[t];
-    slab.shape = Shape::convex(std::shared_ptr<const Hull>(b.shape.data, &mesh.slabs[t]));
-    slab.position = b.position + rotation * mesh.slab_centres[t];
     const Vec3 face = rotation * tri.normal;
     if (face.dot(a.position - b.position) - face.dot(rotation * mesh.vertices[tri.corners[0]]) < 0) return;  // A's centre behind its front
+    slab.shape = Shape::convex(std::shared_ptr<const Hull>(b.shape.data, &mesh.slabs[t]));
+    slab.position = b.position + rotation * mesh.slab_centres[t];
     const size_t first = found.size();
     const int count = collide_convex(a, ia, slab, ib, margin, found);
     if (count > 0 && found[first].normal.dot(face) < kSameCos) {  // not the face's: a side's, an edge's, EPA's
