@@ -47,6 +47,7 @@ void add_gallery_command(Commands& commands);
 void add_simulate_command(Commands& commands);   // simulate_commands.cpp
 void add_check_command(Commands& commands);
 void add_export_command(Commands& commands);     // page_commands.cpp
+void add_preview_command(Commands& commands);
 void add_verify_command(Commands& commands);     // verify_command.cpp
 void add_response_command(Commands& commands);   // workshop/workshop_commands.cpp
 void add_grade_command(Commands& commands);

@@ -20,9 +20,10 @@ extern "C" void on_interrupt(int signal_number) {
     if (children[i] > 0) kill(pid_t(children[i]), signal_number);
   for (int i = 0; i < kMostChildren; ++i)
     if (children[i] > 0) waitpid(pid_t(children[i]), nullptr, 0);
-  render::remove_unfinished_part_files();
-  static const char message[] = "\nimpulse: interrupted; the unfinished video was deleted, earlier videos are as they were\n";
-  [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, message, sizeof message - 1);
+  static const char deleted[] = "\nimpulse: interrupted; the unfinished output was deleted, earlier outputs are as they were\n";
+  static const char stopped[] = "\nimpulse: interrupted\n";
+  [[maybe_unused]] const ssize_t written = render::remove_unfinished_part_files() > 0 ? write(STDERR_FILENO, deleted, sizeof deleted - 1)
+                                                                                      : write(STDERR_FILENO, stopped, sizeof stopped - 1);
   std::signal(signal_number, SIG_DFL);
   raise(signal_number);
 }

@@ -1,7 +1,9 @@
 // `impulse export`: a scene into its interactive page, one HTML file that plays anywhere offline.
+// `impulse preview`: the same page served on 127.0.0.1, made again whenever the scene is saved.
 #include "demos/command.h"
 #include "demos/command_options.h"
 #include "demos/page/page_export.h"
+#include "demos/page/page_preview.h"
 #include "render/part_file.h"
 
 #include <cerrno>
@@ -10,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <sstream>
 
 namespace impulse::demos {
 namespace {
@@ -56,6 +59,51 @@ void add_export_command(Commands& commands) {
                                    kExportFooter, [arguments](const Invocation&) { return export_page(*arguments); });
   command->add_option("scene", arguments->scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
   command->add_option("-o,--output", arguments->out_path, "The page (.html); default out/NAME.html");
+  add_scene_options(command, arguments->scene);
+}
+
+namespace {
+
+struct PreviewArguments {
+  std::string scene_path;
+  int port = 8765;
+  SceneArguments scene;
+};
+
+const std::string kPreviewFooter =
+    "\nServes the scene's page on this computer only (127.0.0.1) and prints its address: open it in a\n"
+    "browser beside your editor. Each time the scene file is saved it is simulated again and the page\n"
+    "shows the new run from the same camera and moment; an error in the scene shows in the page with\n"
+    "its file, line and field, over the last run that read. Ctrl-C stops it. Render the video once\n"
+    "the scene is right.\n" +
+    examples_footer("  impulse preview assets/scenes/bounce.toml              # http://127.0.0.1:8765/\n"
+                    "  impulse preview my_scene.toml --port 9000\n"
+                    "  impulse preview my_scene.toml --port 0                 # any free port\n");
+
+}  // namespace
+
+void add_preview_command(Commands& commands) {
+  auto arguments = std::make_shared<PreviewArguments>();
+  CLI::App* command = commands.add("preview", "Serve a scene's page on 127.0.0.1, simulated again each time the file is saved",
+                                   kPreviewFooter, [arguments](const Invocation&) {
+                                     const std::string script = page_script();
+                                     const PreviewArguments& a = *arguments;
+                                     serve_preview(
+                                         a.scene_path, a.port, script,
+                                         [&a] {
+                                           std::ostringstream run;
+                                           write_run_json(load(SceneFile(a.scene_path), a.scene, false), run);
+                                           return run.str();
+                                         },
+                                         [&a](const std::string& address) {
+                                           std::printf("impulse preview: %s shows %s (saving it simulates again; Ctrl-C stops)\n",
+                                                       address.c_str(), a.scene_path.c_str());
+                                           std::fflush(stdout);
+                                         });
+                                     return 0;
+                                   });
+  command->add_option("scene", arguments->scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
+  command->add_option("--port", arguments->port, "The port on 127.0.0.1 (0: any free one)")->capture_default_str()->check(CLI::Range(0, 65535));
   add_scene_options(command, arguments->scene);
 }
 

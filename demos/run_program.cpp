@@ -69,6 +69,7 @@ int run_program(int argc, char** argv) {
   add_simulate_command(commands);
   add_check_command(commands);
   add_export_command(commands);
+  add_preview_command(commands);
   add_verify_command(commands);
   add_response_command(commands);
   add_grade_command(commands);

@@ -166,10 +166,12 @@ void PartFile::commit() {
 
 bool is_part_file_name(const std::string& file_name) { return writer_of(file_name).has_value(); }
 
-void remove_unfinished_part_files() noexcept {
+int remove_unfinished_part_files() noexcept {
+  int removed = 0;
   for (SignalSlot& slot : signal_slots) {
-    if (slot.ready.load()) unlink(slot.path);
+    if (slot.ready.load()) removed += unlink(slot.path) == 0;
   }
+  return removed;
 }
 
 }  // namespace impulse::render

@@ -47,8 +47,9 @@ class PartFile {
 // Whether `file_name` (no directory) is a temporary of a PartFile: NAME.PID-N.part.
 bool is_part_file_name(const std::string& file_name);
 
-// Deletes the temporary of every PartFile alive. Async-signal-safe: for a handler of SIGINT or
-// SIGTERM that then ends the process, so that an interrupted render leaves no temporary behind.
-void remove_unfinished_part_files() noexcept;
+// Deletes the temporary of every PartFile alive; how many there were. Async-signal-safe: for a
+// handler of SIGINT or SIGTERM that then ends the process, so that an interrupted render leaves no
+// temporary behind.
+int remove_unfinished_part_files() noexcept;
 
 }  // namespace impulse::render

@@ -122,6 +122,8 @@ void body_json(std::ostream& out, const physics::Body& body, const Colour& colou
 
 }  // namespace
 
+void write_json_string(std::ostream& out, const std::string& value) { text(out, value); }
+
 void write_run_json(const Scene& scene, std::ostream& out) {
   WorldTake take(scene);
   const int fps = scene.video.fps;
@@ -190,10 +192,17 @@ void write_run_json(const Scene& scene, std::ostream& out) {
   out << "]}";
 }
 
-void write_page(const Scene& scene, const std::string& script, std::ostream& out) {
+namespace {
+
+// The page around the run: `run` writes the run's JSON, `live` the live block (or nothing); a live
+// page may fetch from where it came.
+template <class Run>
+void write_html(const std::string& script, std::ostream& out, bool live, const Run& run, const std::string& state_json) {
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-         "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'\">\n"
+         "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'"
+      << (live ? "; connect-src 'self'" : "")
+      << "\">\n"
          "<title>impulse page</title>\n<style>\n"
          "html, body { margin: 0; height: 100%; font-family: 'DejaVu Sans', sans-serif; background: #eaedf4; }\n"
          "#view { position: absolute; inset: 0 0 56px 0; }\n#view canvas { width: 100%; height: 100%; display: block; }\n"
@@ -203,6 +212,8 @@ void write_page(const Scene& scene, const std::string& script, std::ostream& out
          "#caption { position: absolute; left: 50%; bottom: 76px; transform: translateX(-50%); max-width: 80%; padding: 8px 16px; border-radius: 8px; background: rgba(40, 42, 48, 0.85); color: #fff; font-size: 18px; text-align: center; }\n"
          "#caption:empty { display: none; }\n"
          "pre#probe, pre#errors { position: absolute; left: -9999px; }\n"
+         "#problem { position: absolute; top: 64px; left: 16px; right: 16px; margin: 0; padding: 10px 14px; border-radius: 8px; background: #fff0f0; color: #8a1010; border: 2px solid #d04040; font: 15px 'DejaVu Sans Mono', monospace; white-space: pre-wrap; }\n"
+         "#problem:empty { display: none; }\n"
          "body.bare #view { inset: auto; left: 0; top: 0; } body.bare #bar, body.bare h1, body.bare #caption { display: none; }\n</style></head><body>\n"
          "<div id=\"view\"></div>\n<h1 id=\"title\"></h1>\n<div id=\"caption\"></div>\n"
          "<div id=\"bar\"><button id=\"play\">Play</button><button id=\"back\" title=\"one frame back\">&#9664;</button>"
@@ -210,10 +221,12 @@ void write_page(const Scene& scene, const std::string& script, std::ostream& out
          "<input id=\"time\" type=\"range\" min=\"0\" max=\"0\" step=\"1\" value=\"0\" aria-label=\"time\">"
          "<span id=\"clock\">t = 0.00 s</span><label>speed <select id=\"speed\"><option value=\"0.25\">\u00bc\u00d7</option>"
          "<option value=\"0.5\">\u00bd\u00d7</option><option value=\"1\" selected>1\u00d7</option><option value=\"2\">2\u00d7</option></select></label></div>\n"
-         "<pre id=\"probe\"></pre><pre id=\"errors\"></pre>\n"
+         "<pre id=\"problem\"></pre><pre id=\"probe\"></pre><pre id=\"errors\"></pre>\n"
          "<script id=\"impulse-run\" type=\"application/json\">";
-  write_run_json(scene, out);
-  out << "</script>\n<script>\n";
+  run(out);
+  out << "</script>\n";
+  if (live) out << "<script id=\"impulse-live\" type=\"application/json\">" << state_json << "</script>\n";
+  out << "<script>\n";
   // The bundle's own text may not close its element either ("</script" only in its strings).
   for (size_t at = 0; at < script.size();) {
     const size_t end = script.find("</script", at);
@@ -223,6 +236,16 @@ void write_page(const Scene& scene, const std::string& script, std::ostream& out
     at = end + 8;
   }
   out << "\n</script>\n</body></html>\n";
+}
+
+}  // namespace
+
+void write_page(const Scene& scene, const std::string& script, std::ostream& out) {
+  write_html(script, out, false, [&](std::ostream& to) { write_run_json(scene, to); }, "");
+}
+
+void write_live_page(const std::string& run_json, const std::string& state_json, const std::string& script, std::ostream& out) {
+  write_html(script, out, true, [&](std::ostream& to) { to << run_json; }, state_json);
 }
 
 std::string page_script() {

@@ -9,6 +9,9 @@
 
 namespace impulse::demos {
 
+// A JSON string, quoted and escaped, that no text inside it can close a page's script element by.
+void write_json_string(std::ostream& out, const std::string& value);
+
 // The page's JSON: title, frame rate, camera, the bodies (shape, size, colour; a hull's or mesh's
 // triangles in its frame) and per frame the poses of the bodies whose pose changed since the frame
 // before, each as its index then x y z, w x y z.
@@ -16,6 +19,12 @@ void write_run_json(const Scene& scene, std::ostream& out);
 
 // The whole page: `script` is the viewer's bundle (page_script()).
 void write_page(const Scene& scene, const std::string& script, std::ostream& out);
+
+// The page `impulse preview` serves: `run_json` (write_run_json's) and the viewer as above, and
+// `state_json` ({"version":N,"error":...}, the server's /state when the page was made). The page
+// may fetch from where it came (/state, which it polls): it reloads on a new run, keeping its
+// camera and moment, and shows a scene's error over the last good run.
+void write_live_page(const std::string& run_json, const std::string& state_json, const std::string& script, std::ostream& out);
 
 // The viewer's bundle: <prefix>/share/impulse/web/page.js beside an installed program, else the
 // build tree's. Throws std::runtime_error saying how to build it when neither is there.

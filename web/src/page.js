@@ -92,6 +92,7 @@ camera.position.set(...run.camera.position);
 const controls = new OrbitControls(camera, renderer.domElement);
 controls.target.set(...run.camera.target);
 controls.update();
+controls.addEventListener('change', () => redraw());
 
 const objects = run.bodies.map((body) => {
   const material = new THREE.MeshStandardMaterial({ color: colourOf(body.colour), roughness: 0.6, metalness: 0.0,
@@ -121,7 +122,12 @@ for (let k = 0; k < frameCount; ++k) {
   for (let at = 0; at < listed.length; at += 8) poses.set(listed.slice(at + 1, at + 8), here + 7 * listed[at]);
 }
 
+// Drawn again only when something changed: the moment, the camera, the view's size.
+let stale = true;
+const redraw = () => { stale = true; };
+
 function showFrame(k) {
+  redraw();
   const here = k * bodyCount * 7;
   for (let i = 0; i < bodyCount; ++i) {
     if (run.bodies[i].shape === 'plane') continue;
@@ -173,6 +179,7 @@ function resize() {
   renderer.setSize(width, height, false);
   camera.aspect = width / height;
   camera.updateProjectionMatrix();
+  redraw();
 }
 window.addEventListener('resize', resize);
 resize();
@@ -182,8 +189,10 @@ renderer.setAnimationLoop(() => {
     const k = Math.floor(((performance.now() - started) / 1000) * run.fps * Number(speed.value));
     if (k >= frameCount - 1) { setFrame(frameCount - 1); play(false); } else if (k !== frame) setFrame(k);
   }
-  controls.update();
-  renderer.render(scene, camera);
+  if (stale) {
+    stale = false;
+    renderer.render(scene, camera);
+  }
 });
 setFrame(0);
 
@@ -218,4 +227,43 @@ if (probe) {
   lines.push('GL ' + (renderer.getContext() ? 'yes' : 'no'));
   document.getElementById('probe').textContent = lines.join('\n');
 }
-window.impulsePage = { frameCount, setFrame, errors };
+// The preview's page (impulse preview serves it with its state in #impulse-live): polls /state,
+// reloads when a new run has been made, keeping the camera, the moment and whether it plays, and
+// shows the scene's error over the last good run.
+const liveBlock = document.getElementById('impulse-live');
+const version = liveBlock ? JSON.parse(liveBlock.textContent).version : null;
+if (liveBlock) {
+  const problem = document.getElementById('problem');
+  const keptKey = 'impulse-preview-view';
+  const kept = JSON.parse(sessionStorage.getItem(keptKey) || 'null');
+  if (kept) {
+    camera.position.fromArray(kept.position);
+    controls.target.fromArray(kept.target);
+    controls.update();
+    setFrame(Math.round(kept.time * run.fps));
+    if (kept.playing) play(true);
+  }
+  const show = (state) => {
+    problem.textContent = state.error ? state.error + '\n(the page shows the last run that read: mend the file and save it)' : '';
+  };
+  show(JSON.parse(liveBlock.textContent));
+  const poll = async () => {
+    let wait = 250;
+    try {
+      const state = await (await fetch('state', { cache: 'no-store' })).json();
+      if (state.version !== version && !state.error && !state.busy) {
+        sessionStorage.setItem(keptKey, JSON.stringify({ position: camera.position.toArray(), target: controls.target.toArray(),
+                                                         time: frame / run.fps, playing }));
+        window.location.reload();
+        return;
+      }
+      show(state);
+    } catch (failure) {
+      problem.textContent = 'The preview has stopped: run impulse preview again, then reload this page.';
+      wait = 1000;
+    }
+    setTimeout(poll, wait);
+  };
+  setTimeout(poll, 250);
+}
+window.impulsePage = { run, frameCount, setFrame, errors, camera, controls, version, frame: () => frame };
