@@ -3,6 +3,7 @@
 #include "demos/command.h"
 #include "demos/command_options.h"
 #include "demos/page/page_export.h"
+#include "demos/page/page_glb.h"
 #include "demos/page/page_preview.h"
 #include "render/part_file.h"
 
@@ -19,23 +20,27 @@ namespace {
 
 struct ExportArguments {
   std::string scene_path;
-  std::string out_path;  // -o; empty: out/NAME.html
+  std::string out_path;  // -o; empty: out/NAME.html (or .glb)
+  std::string format;    // html or glb; empty: glb where -o ends in .glb, else html
   SceneArguments scene;
 };
 
 int export_page(const ExportArguments& arguments) {
   namespace fs = std::filesystem;
+  std::string format = arguments.format;
+  if (format.empty()) format = fs::path(arguments.out_path).extension() == ".glb" ? "glb" : "html";
   const Scene scene = load(SceneFile(arguments.scene_path), arguments.scene, false);
-  const std::string script = page_script();
+  const std::string script = format == "html" ? page_script() : "";
   const std::string path = arguments.out_path.empty()
-                               ? (fs::path("out") / fs::path(arguments.scene_path).stem()).string() + ".html"
+                               ? (fs::path("out") / fs::path(arguments.scene_path).stem()).string() + "." + format
                                : arguments.out_path;
   std::error_code error;
   if (const fs::path parent = fs::path(path).parent_path(); !parent.empty()) fs::create_directories(parent, error);
   render::PartFile part(path);
   std::ofstream out(part.part_path(), std::ios::binary | std::ios::trunc);
   if (!out) throw render::OutputError("cannot open " + part.part_path() + " for writing: " + std::strerror(errno));
-  write_page(scene, script, out);
+  if (format == "glb") write_glb(scene, out);
+  else write_page(scene, script, out);
   out.close();
   if (!out) throw render::OutputError("cannot write " + part.part_path() + ": " + std::strerror(errno));
   part.commit();
@@ -46,19 +51,25 @@ int export_page(const ExportArguments& arguments) {
 const std::string kExportFooter =
     "\nThe page holds the scene's one run (each video frame's poses) and its viewer (three.js): open it\n"
     "from disk in any browser, offline; play, pause, scrub, step a frame, change the speed, and orbit\n"
-    "(drag), zoom (wheel) and pan (right drag) from the scene's camera.\n" +
+    "(drag), zoom (wheel) and pan (right drag) from the scene's camera.\n"
+    "With --format glb (or -o NAME.glb) it writes the run as glTF 2.0 instead, for Blender (File >\n"
+    "Import > glTF 2.0), three.js and other 3D tools: a node and mesh per body in its colour, the rods,\n"
+    "the scene's camera, and an animation \"run\" of their poses at the video's frames.\n" +
     examples_footer("  impulse export assets/scenes/bounce.toml                # out/bounce.html\n"
                     "  impulse export assets/scenes/s5_half_pipe.toml -o half_pipe.html\n"
-                    "  impulse export scene.toml --set body[ball].restitution=0.5 -o bouncier.html\n");
+                    "  impulse export scene.toml --set body[ball].restitution=0.5 -o bouncier.html\n"
+                    "  impulse export assets/scenes/ex5_newtons_cradle.toml --format glb   # out/ex5_newtons_cradle.glb\n");
 
 }  // namespace
 
 void add_export_command(Commands& commands) {
   auto arguments = std::make_shared<ExportArguments>();
-  CLI::App* command = commands.add("export", "Write a scene's interactive page: one HTML file to play and orbit in a browser",
+  CLI::App* command = commands.add("export", "Write a scene's interactive page: one HTML file to play and orbit in a browser (or a glTF file)",
                                    kExportFooter, [arguments](const Invocation&) { return export_page(*arguments); });
   command->add_option("scene", arguments->scene_path, "Scene file (.toml)")->required()->check(CLI::ExistingFile);
-  command->add_option("-o,--output", arguments->out_path, "The page (.html); default out/NAME.html");
+  command->add_option("-o,--output", arguments->out_path, "The page (.html) or glTF file (.glb); default out/NAME.html or out/NAME.glb");
+  command->add_option("--format", arguments->format, "html (the page) or glb (glTF 2.0 binary); default: glb where -o ends in .glb, else html")
+      ->check(CLI::IsMember({"html", "glb"}));
   add_scene_options(command, arguments->scene);
 }
 

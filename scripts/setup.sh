@@ -19,6 +19,7 @@ packages=(
   libccd-dev                                      # GJK and EPA: where two convex shapes without a formula of their own meet (physics/collide_convex.cpp)
   libqhull-dev                                    # convex hulls: a hull shape's faces from its points (physics/hull.cpp)
   libtinyobjloader-dev                            # Wavefront OBJ files: a mesh shape's triangles (demos/scene/scene_mesh.cpp)
+  libtinygltf-dev                                 # glTF 2.0 files: `impulse export --format glb` (demos/page/page_glb.cpp)
   libcpp-httplib-dev                              # impulse preview's server on 127.0.0.1 (demos/page/page_preview.cpp)
   libegl-dev libegl-mesa0 libgl1-mesa-dri         # offscreen OpenGL through EGL (a GPU, else Mesa's llvmpipe)
   libosmesa6-dev                                  # ... or through OSMesa (llvmpipe; gone from Mesa 25.1)
