@@ -7,11 +7,8 @@
 #include "demos/page/page_preview.h"
 #include "render/part_file.h"
 
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
@@ -34,16 +31,10 @@ int export_page(const ExportArguments& arguments) {
   const std::string path = arguments.out_path.empty()
                                ? (fs::path("out") / fs::path(arguments.scene_path).stem()).string() + "." + format
                                : arguments.out_path;
-  std::error_code error;
-  if (const fs::path parent = fs::path(path).parent_path(); !parent.empty()) fs::create_directories(parent, error);
-  render::PartFile part(path);
-  std::ofstream out(part.part_path(), std::ios::binary | std::ios::trunc);
-  if (!out) throw render::OutputError("cannot open " + part.part_path() + " for writing: " + std::strerror(errno));
-  if (format == "glb") write_glb(scene, out);
-  else write_page(scene, script, out);
-  out.close();
-  if (!out) throw render::OutputError("cannot write " + part.part_path() + ": " + std::strerror(errno));
-  part.commit();
+  render::write_file(path, [&](std::ostream& out) {
+    if (format == "glb") write_glb(scene, out);
+    else write_page(scene, script, out);
+  });
   std::fprintf(stderr, "wrote %s\n", path.c_str());
   return 0;
 }

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <system_error>
 #include <utility>
@@ -162,6 +163,19 @@ void PartFile::commit() {
     throw OutputError("cannot rename " + part_path_ + " to " + final_path_ + ": " + std::strerror(errno));
   }
   committed_ = true;
+}
+
+void write_file(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  std::error_code error;
+  if (const std::filesystem::path parent = std::filesystem::path(path).parent_path(); !parent.empty())
+    std::filesystem::create_directories(parent, error);  // what cannot be made, PartFile reports
+  PartFile part(path);
+  std::ofstream out(part.part_path(), std::ios::binary | std::ios::trunc);
+  if (!out) throw OutputError("cannot open " + part.part_path() + " for writing: " + std::strerror(errno));
+  write(out);
+  out.close();
+  if (!out) throw OutputError("cannot write " + part.part_path() + ": " + std::strerror(errno));
+  part.commit();
 }
 
 bool is_part_file_name(const std::string& file_name) { return writer_of(file_name).has_value(); }

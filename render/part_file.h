@@ -13,6 +13,8 @@
 // socket is refused, in the constructor (before any work) and again at commit(). A symbolic link
 // to a regular file is written through: the file it points to is replaced, the link stays.
 #pragma once
+#include <functional>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 
@@ -43,6 +45,11 @@ class PartFile {
   int signal_slot_ = -1;
   bool committed_ = false;
 };
+
+// A file written whole or not at all: its directory made, `write` into a PartFile's temporary
+// (binary), then committed. Throws OutputError when it cannot be opened, written or renamed, and
+// whatever `write` throws (the temporary then deleted).
+void write_file(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 // Whether `file_name` (no directory) is a temporary of a PartFile: NAME.PID-N.part.
 bool is_part_file_name(const std::string& file_name);

@@ -50,5 +50,6 @@ void add_scene_bindings(py::module_& module);
 void add_trace_bindings(py::module_& module);
 void add_film_bindings(py::module_& module);
 void add_response_bindings(py::module_& module);
+void add_page_bindings(py::module_& module);
 
 }  // namespace impulse::python

@@ -67,4 +67,5 @@ PYBIND11_MODULE(_impulse, module) {
   python::add_trace_bindings(module);
   python::add_film_bindings(module);
   python::add_response_bindings(module);
+  python::add_page_bindings(module);
 }

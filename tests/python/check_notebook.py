@@ -1,6 +1,7 @@
 """Checks an executed demos/notebooks/workshop.ipynb (nbconvert --execute ran it in a real
 kernel): every cell ran without an error, and its outputs are what the cells promise: the trace's
-numbers, a matplotlib figure, videos shown inline, and listing 1 in Python passing the grade.
+numbers, a matplotlib figure, videos and a scene's page shown inline, and listing 1 in Python passing
+the grade.
 
     python3 tests/python/check_notebook.py EXECUTED.ipynb
 """
@@ -27,12 +28,16 @@ def main(path):
     assert len(videos) == 2, "expected the comparison and the student's bounce as videos, got %d" % len(videos)
     for html in videos:
         assert 'src="data:video/mp4;base64,' in html and 'poster="data:image/png;base64,' in html
+    pages = [d["text/html"] for d in data if d.get("text/html", "").startswith("<iframe")]
+    assert len(pages) == 1, "expected the friction scene's page inline, got %d" % len(pages)
+    assert 'sandbox="allow-scripts"' in pages[0] and "impulse-run" in pages[0]
+    assert "&quot;name&quot;:&quot;sliding box&quot;" in pages[0], "the page holds the scene's bodies"
     assert "<impulse.Trace of ex1_friction" in text
     match = re.search(r"after [\d.]+ s: ([\d.]+) m/s with friction, ([\d.]+) m/s without", text)
     assert match and float(match.group(1)) < float(match.group(2)), "friction must slow the box: " + str(match)
     match = re.search(r"impulse grade add_collision_impulse\(\): (\d+) of (\d+) cases pass", text)
     assert match and match.group(1) == match.group(2), "listing 1 in Python must pass every case: " + str(match)
-    print("%s: %d cells ran; a figure, %d videos, every grade case passed" % (path, len(code), len(videos)))
+    print("%s: %d cells ran; a figure, %d videos, a page, every grade case passed" % (path, len(code), len(videos)))
 
 
 if __name__ == "__main__":

@@ -53,10 +53,11 @@ except ImportError as error:
     raise ImportError(_import_error("_impulse")) from error
 from ._toml import settings as _settings
 from .trace import Trace, Contacts
+from .page import Page
 from .video import Video
 from .workshop import Grade, RigidBody, case_names, time_step
 
-__all__ = ["load", "scene", "Scene", "Trace", "Contacts", "Video", "compare", "grade", "Grade", "RigidBody",
+__all__ = ["load", "scene", "Scene", "Trace", "Contacts", "Video", "Page", "compare", "grade", "Grade", "RigidBody",
            "time_step", "case_names", "SceneError", "OutputError", "ResponseError"]
 
 SceneError = _impulse.SceneError        # ValueError: .file, .line, .table, .field, .setting
@@ -140,6 +141,13 @@ class Scene:
         path = os.fspath(path) if path is not None else os.path.join("out", self.name + ".mp4")
         written = _impulse.render(self._core, path, quality or "", _progress(progress, f"render {self.name}", "frame"))
         return Video(written)
+
+    def view(self, path=None):
+        """Writes the scene's interactive page into ``path`` (None: out/NAME.html), as ``impulse
+        export`` does: one HTML file of the run and a three.js viewer to play, scrub and orbit,
+        offline. Returns the Page, which a notebook shows inline."""
+        path = os.fspath(path) if path is not None else os.path.join("out", self.name + ".html")
+        return Page(_impulse.page(self._core, path))
 
     def frames(self, times, quality="low", progress=False):
         """The pictures at simulated times ``times`` (s), as render() shows them: a numpy array

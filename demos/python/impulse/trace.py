@@ -72,6 +72,11 @@ class Trace:
         return (f"<impulse.Trace of {self.scene.name}: {len(self)} rows, {len(self.bodies)} bodies, "
                 f"t = {self.time[0]:g} .. {self.time[-1]:g} s, {len(self.contacts)} contacts>")
 
+    def view(self, path=None):
+        """The interactive page of the scene this trace ran (Scene.view): the same run, as the
+        engine gives the same scene the same steps, sampled at the video's frames."""
+        return self.scene.view(path)
+
     def index(self, body):
         """A body's index: by name (the first of that name) or by index."""
         if isinstance(body, str):
