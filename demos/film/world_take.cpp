@@ -35,6 +35,7 @@ WorldTake::WorldTake(const Scene& scene)
       after_(before_) {
   for (const physics::Body& body : bodies_) {
     velocities_.push_back(body.velocity);
+    angular_velocities_.push_back(body.angular_velocity);
     awake_.push_back(body.awake);
     if (!body.is_static()) weight_impulse_ += body.mass * scene.world.gravity.norm() * scene.world.time_step;
   }
@@ -94,6 +95,7 @@ void WorldTake::step() {
   kept.poses = poses_of(bodies);
   for (const physics::Body& body : bodies) {
     kept.velocities.push_back(body.velocity);
+    kept.angular_velocities.push_back(body.angular_velocity);
     kept.awake.push_back(body.awake);
   }
   kept.contacts = record.contacts;
@@ -147,6 +149,7 @@ void WorldTake::sample(double time, double video_time, FrameSample& sample) {
     before_.swap(after_);
     after_ = std::move(step.poses);
     velocities_ = std::move(step.velocities);
+    angular_velocities_ = std::move(step.angular_velocities);
     awake_ = std::move(step.awake);
     hold_.add_step(step.contacts, video_time);
     taken_time_ = step.time;
@@ -157,6 +160,7 @@ void WorldTake::sample(double time, double video_time, FrameSample& sample) {
       steps_taken_ == 0 ? 1.0 : std::clamp(1.0 - (taken_time_ - time) / scene_.world.time_step, 0.0, 1.0);
   interpolate(before_, after_, weight, sample.poses);
   sample.velocities = velocities_;
+  sample.angular_velocities = angular_velocities_;
   sample.awake = awake_;
   sample.contacts = hold_.shown(video_time);
   if (!contacts_drawn_) keep_label_candidate(sample.contacts);

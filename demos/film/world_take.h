@@ -21,6 +21,7 @@ namespace impulse::demos {
 struct FrameSample {
   std::vector<BodyPose> poses;             // between the two steps around the frame's moment
   std::vector<physics::Vec3> velocities;   // of each body after the last step taken
+  std::vector<physics::Vec3> angular_velocities;  // likewise
   std::vector<char> awake;                 // of each body after the last step taken
   std::vector<physics::ContactRecord> contacts;  // held on screen (only the label's, if no marks are drawn)
   int64_t plotted_steps = 0;               // steps the plots show
@@ -53,7 +54,7 @@ class WorldTake {
   struct Step {
     double time = 0;
     std::vector<BodyPose> poses;
-    std::vector<physics::Vec3> velocities;
+    std::vector<physics::Vec3> velocities, angular_velocities;
     std::vector<char> awake;
     std::vector<physics::ContactRecord> contacts;
   };
@@ -78,7 +79,7 @@ class WorldTake {
   int64_t steps_taken_ = 0;
   double taken_time_ = 0;
   std::vector<BodyPose> before_, after_;
-  std::vector<physics::Vec3> velocities_;
+  std::vector<physics::Vec3> velocities_, angular_velocities_;
   std::vector<char> awake_;
   std::vector<ImpactNumbers> impacts_;  // for eq. 8 on screen, in time order
   size_t impacts_shown_ = 0;            // those at or before the last sample

@@ -98,6 +98,16 @@ void body_json(std::ostream& out, const physics::Body& body, const Colour& colou
   text(out, body.name);
   out << ",\"shape\":\"" << shape_name(s.type) << "\",\"static\":" << (body.is_static() ? "true" : "false") << ",\"colour\":";
   vector(out, physics::Vec3(colour.r, colour.g, colour.b));
+  if (!body.is_static()) {  // for the numbers the page shows on a click: momentum, energy
+    out << ",\"mass\":";
+    number(out, body.mass);
+    out << ",\"inertia\":[";  // in the body's frame, row by row
+    for (int k = 0; k < 9; ++k) {
+      if (k > 0) out << ',';
+      number(out, body.inertia_local(k / 3, k % 3));
+    }
+    out << ']';
+  }
   switch (s.type) {
     case physics::ShapeType::sphere: out << ",\"radius\":"; number(out, s.radius); break;
     case physics::ShapeType::box: out << ",\"half_extents\":"; vector(out, s.half_extents); break;
@@ -134,6 +144,8 @@ void write_run_json(const Scene& scene, std::ostream& out) {
   text(out, scene.title);
   out << ",\"fps\":" << fps << ",\"duration\":";
   number(out, scene.duration);
+  out << ",\"gravity\":";
+  vector(out, scene.world.gravity);
   out << ",\"camera\":{\"position\":";
   vector(out, scene.camera.position.cast<double>());
   out << ",\"target\":";
@@ -164,7 +176,11 @@ void write_run_json(const Scene& scene, std::ostream& out) {
   // Positions to 1e-5 m, orientations to 1e-6.
   out << "],\"frames\":[";
   FrameSample sample;
-  std::vector<std::string> last(bodies.size());
+  std::vector<std::string> last(bodies.size()), last_motion(bodies.size());
+  // Per frame, the bodies whose velocity or spin (after the last step taken) changed: index, then
+  // vx vy vz, wx wy wz to 1e-4 (m/s, rad/s: a resting body's jitter below it costs nothing).
+  // Written after the frames.
+  std::string motion;
   for (long k = 0; k < frames; ++k) {
     const double time = double(k) / fps;
     while (!take.finished() && take.time() < time - 1e-9) take.step();
@@ -188,8 +204,22 @@ void write_run_json(const Scene& scene, std::ostream& out) {
       last[i] = std::move(written);
     }
     out << ']';
+    motion += k > 0 ? ",[" : "[";
+    bool first_motion = true;
+    for (size_t i = 0; i < sample.velocities.size(); ++i) {
+      std::string written;
+      for (const physics::Vec3* v : {&sample.velocities[i], &sample.angular_velocities[i]})
+        for (int c = 0; c < 3; ++c) fixed(written, (*v)[c], 4);
+      if (written == last_motion[i]) continue;
+      if (!first_motion) motion += ',';
+      motion += std::to_string(i);
+      motion += written;
+      first_motion = false;
+      last_motion[i] = std::move(written);
+    }
+    motion += ']';
   }
-  out << "]}";
+  out << "],\"motion\":[" << motion << "]}";
 }
 
 namespace {
@@ -214,6 +244,9 @@ void write_html(const std::string& script, std::ostream& out, bool live, const R
          "pre#probe, pre#errors { position: absolute; left: -9999px; }\n"
          "#problem { position: absolute; top: 64px; left: 16px; right: 16px; margin: 0; padding: 10px 14px; border-radius: 8px; background: #fff0f0; color: #8a1010; border: 2px solid #d04040; font: 15px 'DejaVu Sans Mono', monospace; white-space: pre-wrap; }\n"
          "#problem:empty { display: none; }\n"
+         "#panel { position: absolute; top: 64px; right: 16px; padding: 8px 14px 10px; border-radius: 8px; background: rgba(255, 255, 255, 0.94); font-size: 14px; box-shadow: 0 1px 6px rgba(0, 0, 0, 0.2); }\n"
+         "#panel h2 { margin: 0 0 6px; font-size: 16px; } #panel td { padding: 1px 8px 1px 0; white-space: nowrap; } #panel td:nth-child(2) { font-family: 'DejaVu Sans Mono', monospace; font-size: 13px; }\n"
+         "#panel p { margin: 6px 0 0; font-size: 12px; color: #555; max-width: 300px; }\n"
          "body.bare #view { inset: auto; left: 0; top: 0; } body.bare #bar, body.bare h1, body.bare #caption { display: none; }\n</style></head><body>\n"
          "<div id=\"view\"></div>\n<h1 id=\"title\"></h1>\n<div id=\"caption\"></div>\n"
          "<div id=\"bar\"><button id=\"play\">Play</button><button id=\"back\" title=\"one frame back\">&#9664;</button>"
@@ -221,7 +254,7 @@ void write_html(const std::string& script, std::ostream& out, bool live, const R
          "<input id=\"time\" type=\"range\" min=\"0\" max=\"0\" step=\"1\" value=\"0\" aria-label=\"time\">"
          "<span id=\"clock\">t = 0.00 s</span><label>speed <select id=\"speed\"><option value=\"0.25\">\u00bc\u00d7</option>"
          "<option value=\"0.5\">\u00bd\u00d7</option><option value=\"1\" selected>1\u00d7</option><option value=\"2\">2\u00d7</option></select></label></div>\n"
-         "<pre id=\"problem\"></pre><pre id=\"probe\"></pre><pre id=\"errors\"></pre>\n"
+         "<div id=\"panel\" hidden></div><pre id=\"problem\"></pre><pre id=\"probe\"></pre><pre id=\"errors\"></pre>\n"
          "<script id=\"impulse-run\" type=\"application/json\">";
   run(out);
   out << "</script>\n";

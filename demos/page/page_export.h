@@ -12,9 +12,10 @@ namespace impulse::demos {
 // A JSON string, quoted and escaped, that no text inside it can close a page's script element by.
 void write_json_string(std::ostream& out, const std::string& value);
 
-// The page's JSON: title, frame rate, camera, the bodies (shape, size, colour; a hull's or mesh's
-// triangles in its frame) and per frame the poses of the bodies whose pose changed since the frame
-// before, each as its index then x y z, w x y z.
+// The page's JSON: title, frame rate, gravity, camera, the bodies (shape, size, colour; a hull's or
+// mesh's triangles in its frame; a moving body's mass and inertia) and per frame the poses of the
+// bodies whose pose changed since the frame before, each as its index then x y z, w x y z; and
+// likewise their velocity and spin after the frame's last step, index then vx vy vz, wx wy wz.
 void write_run_json(const Scene& scene, std::ostream& out);
 
 // The whole page: `script` is the viewer's bundle (page_script()).

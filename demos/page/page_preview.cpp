@@ -25,7 +25,7 @@ std::string state_json(const PreviewState& state) {
 
 std::string empty_run_json() {
   return "{\"title\":\"\",\"fps\":30,\"duration\":0,\"camera\":{\"position\":[0,2,6],\"target\":[0,0.5,0],\"fov_y_degrees\":45},"
-         "\"captions\":[],\"bodies\":[],\"frames\":[[]]}";
+         "\"gravity\":[0,-9.81,0],\"captions\":[],\"bodies\":[],\"frames\":[[]],\"motion\":[[]]}";
 }
 
 namespace {

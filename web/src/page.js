@@ -126,6 +126,15 @@ for (let k = 0; k < frameCount; ++k) {
 let stale = true;
 const redraw = () => { stale = true; };
 
+// Every frame's velocity and spin, decoded as the poses are: index, then vx vy vz, wx wy wz.
+const motions = new Float64Array(frameCount * bodyCount * 6);
+for (let k = 0; k < frameCount; ++k) {
+  const here = k * bodyCount * 6;
+  if (k > 0) motions.copyWithin(here, here - bodyCount * 6, here);
+  const listed = run.motion[k] || [];
+  for (let at = 0; at < listed.length; at += 7) motions.set(listed.slice(at + 1, at + 7), here + 6 * listed[at]);
+}
+
 function showFrame(k) {
   redraw();
   const here = k * bodyCount * 7;
@@ -136,6 +145,78 @@ function showFrame(k) {
     objects[i].quaternion.set(poses[p + 4], poses[p + 5], poses[p + 6], poses[p + 3]);
   }
 }
+
+// A body's numbers at the frame shown, on a click: velocity, spin, momentum, kinetic energy
+// (translation + rotation, I in the world's frame) and potential energy (from the origin).
+const panel = document.getElementById('panel');
+let chosen = -1;
+function numbersOf(i, k) {
+  const body = run.bodies[i];
+  const m = motions.subarray((k * bodyCount + i) * 6, (k * bodyCount + i) * 6 + 6);
+  const v = new THREE.Vector3(m[0], m[1], m[2]), w = new THREE.Vector3(m[3], m[4], m[5]);
+  const p = (k * bodyCount + i) * 7;
+  const position = new THREE.Vector3(poses[p], poses[p + 1], poses[p + 2]);
+  const turn = new THREE.Matrix3().setFromMatrix4(new THREE.Matrix4().makeRotationFromQuaternion(
+    new THREE.Quaternion(poses[p + 4], poses[p + 5], poses[p + 6], poses[p + 3])));
+  const inertia = new THREE.Matrix3().fromArray(body.inertia).transpose();  // row by row in the run
+  const worldInertia = turn.clone().multiply(inertia).multiply(turn.clone().transpose());
+  const translation = 0.5 * body.mass * v.lengthSq();
+  const rotation = 0.5 * w.dot(w.clone().applyMatrix3(worldInertia));
+  const potential = -body.mass * new THREE.Vector3(...run.gravity).dot(position);
+  return { velocity: v, spin: w, momentum: v.clone().multiplyScalar(body.mass), translation, rotation, potential };
+}
+function showPanel() {
+  objects.forEach((object, i) => { if (object.material.emissive) object.material.emissive.setHex(i === chosen ? 0x303030 : 0x000000); });
+  redraw();
+  if (chosen < 0) {
+    panel.hidden = true;
+    return;
+  }
+  const body = run.bodies[chosen];
+  const n = numbersOf(chosen, frame);
+  const f = (x) => x.toFixed(3);
+  const vector = (u) => '(' + f(u.x) + ', ' + f(u.y) + ', ' + f(u.z) + ')';
+  const rows = [
+    ['v', vector(n.velocity) + ' m/s'],
+    ['|v|', f(n.velocity.length()) + ' m/s'],
+    ['\u03c9', vector(n.spin) + ' rad/s'],
+    ['p = m v', vector(n.momentum) + ' kg\u00b7m/s'],
+    ['kinetic', f(n.translation + n.rotation) + ' J = ' + f(n.translation) + ' + ' + f(n.rotation)],
+    ['potential', f(n.potential) + ' J'],
+  ];
+  panel.replaceChildren();
+  const title = document.createElement('h2');
+  title.textContent = body.name + ', t = ' + (frame / run.fps).toFixed(2) + ' s';
+  panel.append(title);
+  const table = document.createElement('table');
+  for (const row of rows) {
+    const tr = table.insertRow();
+    for (const cell of row) tr.insertCell().textContent = cell;
+  }
+  panel.append(table);
+  const note = document.createElement('p');
+  note.textContent = 'm = ' + f(body.mass) + ' kg; kinetic = \u00bd m v\u00b2 + \u00bd \u03c9\u00b7I\u03c9; potential = \u2212m g\u00b7x';
+  panel.append(note);
+  const numbers = (u) => [u.x, u.y, u.z].join(' ');
+  Object.assign(panel.dataset, { body: body.name, time: String(frame / run.fps), velocity: numbers(n.velocity), spin: numbers(n.spin),
+                                  momentum: numbers(n.momentum), kinetic: String(n.translation + n.rotation), potential: String(n.potential) });
+  panel.hidden = false;
+}
+// A click (not a drag: that orbits) on a moving body chooses it; elsewhere, none.
+const raycaster = new THREE.Raycaster();
+let pressed = null;
+renderer.domElement.addEventListener('pointerdown', (event) => { pressed = [event.clientX, event.clientY]; });
+renderer.domElement.addEventListener('pointerup', (event) => {
+  if (!pressed || Math.hypot(event.clientX - pressed[0], event.clientY - pressed[1]) > 4) return;
+  const box = renderer.domElement.getBoundingClientRect();
+  scene.updateMatrixWorld();  // the poses of the frame shown, drawn yet or not
+  raycaster.setFromCamera(new THREE.Vector2(((event.clientX - box.left) / box.width) * 2 - 1,
+                                            -((event.clientY - box.top) / box.height) * 2 + 1), camera);
+  const movable = objects.filter((object, i) => !run.bodies[i].static);
+  const hit = raycaster.intersectObjects(movable, false)[0];
+  chosen = hit ? objects.indexOf(hit.object) : -1;
+  showPanel();
+});
 
 const slider = document.getElementById('time');
 const clock = document.getElementById('clock');
@@ -154,6 +235,7 @@ function setFrame(k) {
   const shown = run.captions.find((c) => c.start <= time && time < c.end);
   caption.textContent = shown ? shown.text : '';
   showFrame(frame);
+  if (chosen >= 0) showPanel();
 }
 function play(on) {
   playing = on;
@@ -266,4 +348,12 @@ if (liveBlock) {
   };
   setTimeout(poll, 250);
 }
-window.impulsePage = { run, frameCount, setFrame, errors, camera, controls, version, frame: () => frame };
+// Where a body's centre falls in the page (CSS pixels from its top left), for a test's click.
+function pixelOf(name) {
+  const object = objects[run.bodies.findIndex((body) => body.name === name)];
+  camera.updateMatrixWorld(true);
+  const seen = object.position.clone().project(camera);
+  const box = renderer.domElement.getBoundingClientRect();
+  return [box.left + ((seen.x + 1) / 2) * box.width, box.top + ((1 - seen.y) / 2) * box.height];
+}
+window.impulsePage = { run, frameCount, setFrame, errors, camera, controls, version, frame: () => frame, pixelOf };
