@@ -9,6 +9,19 @@
 
 namespace impulse::physics {
 
+const char* shape_name(ShapeType type) {
+  switch (type) {
+    case ShapeType::sphere: return "sphere";
+    case ShapeType::box: return "box";
+    case ShapeType::capsule: return "capsule";
+    case ShapeType::cylinder: return "cylinder";
+    case ShapeType::hull: return "hull";
+    case ShapeType::mesh: return "mesh";
+    case ShapeType::plane: return "plane";
+  }
+  return "shape";
+}
+
 Real shape_volume(const Shape& shape) {
   switch (shape.type) {
     // r·r·r, not std::pow: glibc chooses pow's code by the CPU (an FMA version where there is

@@ -11,6 +11,8 @@ namespace impulse::physics {
 
 // The order is collide()'s: a pair is dispatched with A the earlier type.
 enum class ShapeType { sphere, box, capsule, cylinder, hull, mesh, plane };
+// Its name as a scene file writes it ("sphere", ..., "plane").
+const char* shape_name(ShapeType type);
 
 // A shape in its body's local frame. A plane is static only: the points x with
 // dot(normal, x) = offset, solid below (the side opposite the normal). A capsule is the points

@@ -56,19 +56,6 @@ void fixed(std::string& out, double value, int digits) {
   out.append(text, size_t(length));
 }
 
-const char* shape_name(physics::ShapeType type) {
-  switch (type) {
-    case physics::ShapeType::sphere: return "sphere";
-    case physics::ShapeType::box: return "box";
-    case physics::ShapeType::capsule: return "capsule";
-    case physics::ShapeType::cylinder: return "cylinder";
-    case physics::ShapeType::hull: return "hull";
-    case physics::ShapeType::mesh: return "mesh";
-    case physics::ShapeType::plane: return "plane";
-  }
-  return "sphere";
-}
-
 void triangle_corners(std::ostream& out, const physics::Shape& shape) {
   out << ",\"triangles\":[";
   bool first = true;
@@ -96,7 +83,7 @@ void body_json(std::ostream& out, const physics::Body& body, const Colour& colou
   const physics::Shape& s = body.shape;
   out << "{\"name\":";
   text(out, body.name);
-  out << ",\"shape\":\"" << shape_name(s.type) << "\",\"static\":" << (body.is_static() ? "true" : "false") << ",\"colour\":";
+  out << ",\"shape\":\"" << physics::shape_name(s.type) << "\",\"static\":" << (body.is_static() ? "true" : "false") << ",\"colour\":";
   vector(out, physics::Vec3(colour.r, colour.g, colour.b));
   if (!body.is_static()) {  // for the numbers the page shows on a click: momentum, energy
     out << ",\"mass\":";

@@ -257,19 +257,6 @@ std::string shape_key(const physics::Shape& s, int material) {
   return key;
 }
 
-const char* shape_name(physics::ShapeType type) {
-  switch (type) {
-    case physics::ShapeType::sphere: return "sphere";
-    case physics::ShapeType::box: return "box";
-    case physics::ShapeType::capsule: return "capsule";
-    case physics::ShapeType::cylinder: return "cylinder";
-    case physics::ShapeType::hull: return "hull";
-    case physics::ShapeType::mesh: return "mesh";
-    case physics::ShapeType::plane: return "plane";
-  }
-  return "shape";
-}
-
 }  // namespace
 
 void write_glb(const Scene& scene, std::ostream& out) {
@@ -360,7 +347,7 @@ void write_glb(const Scene& scene, std::ostream& out) {
         case physics::ShapeType::mesh: mesh(g, *shape.mesh()); break;
         case physics::ShapeType::plane: plane(g, shape, target, 2 * reach); break;
       }
-      node.mesh = meshes[key] = builder.mesh(g, material, shape_name(shape.type));
+      node.mesh = meshes[key] = builder.mesh(g, material, physics::shape_name(shape.type));
     }
     if (shape.type != physics::ShapeType::plane) {  // a plane is where its normal and offset put it, in the world
       const double* pose = &poses[i * 7];

@@ -7,15 +7,9 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
+import { check, finish, launchChromium } from '../support/browser.mjs';
 
 const [program, scratch, nodeModules] = process.argv.slice(2);
-const { chromium } = await import(pathToFileURL(path.resolve(nodeModules, 'playwright-core', 'index.mjs')).href);
-
-let failures = 0;
-function check(condition, what) {
-  console.log((condition ? 'ok     ' : 'FAILED ') + what);
-  if (!condition) failures += 1;
-}
 
 // A ball and a brick thrown upwards, spinning; their inertia from the shapes' formulas.
 fs.rmSync(scratch, { recursive: true, force: true });
@@ -78,8 +72,7 @@ function intoBody([w, x, y, z], v) {
   return v.map((c, k) => c + w * t[k] + s[k]);
 }
 
-const browser = await chromium.launch({ executablePath: process.env.IMPULSE_CHROMIUM || '/usr/lib/chromium/chromium',
-                                        args: ['--no-sandbox', '--enable-unsafe-swiftshader'] });
+const browser = await launchChromium(nodeModules);
 const view = await browser.newPage({ viewport: { width: 1000, height: 700 } });
 const complaints = [];
 view.on('pageerror', (error) => complaints.push(error.message));
@@ -127,5 +120,4 @@ await view.mouse.click(150, 90);
 check((await shown()) === null, 'a click on the sky closes the panel');
 check(complaints.length === 0, 'no error in the page: ' + complaints.join('; '));
 await browser.close();
-console.log(failures === 0 ? 'all passed' : failures + ' failed');
-process.exit(failures === 0 ? 0 : 1);
+finish();

@@ -17,6 +17,7 @@
 
 #include "demos/scene/scene_file.h"
 #include "tests/support/child_process.h"
+#include "tests/support/traced_poses.h"
 #include "tests/support/scene_scratch.h"
 
 namespace impulse {
@@ -30,33 +31,8 @@ std::string contents(const fs::path& path) {
   return text.str();
 }
 
-// A body's pose at a moment: x y z and the quaternion w x y z.
-using Pose = std::vector<double>;
-using Poses = std::map<std::pair<std::string, long>, Pose>;  // (body, moment in ms) -> pose
-
-// `impulse simulate --trace`'s rows at the given moments (ms), by body name.
-Poses traced(const fs::path& csv, const std::vector<long>& moments) {
-  Poses poses;
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::string cell;
-    bool quoted = false;
-    for (const char c : line) {
-      if (c == '"') quoted = !quoted;
-      else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
-      else cell += c;
-    }
-    cells.push_back(cell);
-    const long ms = std::lround(std::stod(cells[0]) * 1000);
-    for (const long moment : moments)
-      if (ms == moment) poses[{cells[2], ms}] = {std::stod(cells[3]), std::stod(cells[4]), std::stod(cells[5]), std::stod(cells[6]),
-                                                   std::stod(cells[7]), std::stod(cells[8]), std::stod(cells[9])};
-  }
-  return poses;
-}
+using testing::Pose;
+using testing::Poses;
 
 // The validator's counts and messages (tests/page/validate_glb.mjs).
 struct Report {
@@ -215,7 +191,7 @@ void check_glb(const std::string& source, const fs::path& glb, const fs::path& d
   const fs::path trace = dir / "trace.csv";
   const testing::ChildResult simulated = testing::run_child({IMPULSE_PROGRAM, "-q", "simulate", source, "--trace", trace.string()});
   ASSERT_TRUE(simulated.succeeded()) << simulated.describe();
-  const Poses expected = traced(trace, moments_ms);
+  const Poses expected = testing::traced_poses(trace, moments_ms);
   int compared = 0;
   for (const auto& [key, pose] : expected) {
     const auto named = node_of.find(key.first);

@@ -15,6 +15,7 @@
 #include "demos/scene/scene_file.h"
 #include "render/camera_view.h"
 #include "tests/support/child_process.h"
+#include "tests/support/traced_poses.h"
 #include "tests/support/scene_scratch.h"
 
 namespace impulse {
@@ -28,33 +29,8 @@ std::string contents(const fs::path& path) {
   return text.str();
 }
 
-// A body's pose at a moment: x y z and the quaternion w x y z.
-using Pose = std::vector<double>;
-using Poses = std::map<std::pair<std::string, long>, Pose>;  // (body, moment in ms) -> pose
-
-// `impulse simulate --trace`'s rows at the given moments (ms), by body name.
-Poses traced(const fs::path& csv, const std::vector<long>& moments) {
-  Poses poses;
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::string cell;
-    bool quoted = false;
-    for (const char c : line) {
-      if (c == '"') quoted = !quoted;
-      else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
-      else cell += c;
-    }
-    cells.push_back(cell);
-    const long ms = std::lround(std::stod(cells[0]) * 1000);
-    for (const long moment : moments)
-      if (ms == moment) poses[{cells[2], ms}] = {std::stod(cells[3]), std::stod(cells[4]), std::stod(cells[5]), std::stod(cells[6]),
-                                                   std::stod(cells[7]), std::stod(cells[8]), std::stod(cells[9])};
-  }
-  return poses;
-}
+using testing::Pose;
+using testing::Poses;
 
 // What the page drew: its probe's POSE lines (t x y z qw qx qy qz name), and its errors.
 struct Drawn {
@@ -157,7 +133,7 @@ TEST_P(EveryScene, ThePageDrawsEachBodyWhereTheTraceAndTheVideosCameraPutIt) {
   EXPECT_EQ(drawn.errors, "");
   ASSERT_EQ(drawn.width, 854);
   ASSERT_EQ(drawn.height, 480);
-  const Poses expected = traced(trace, moments_ms);
+  const Poses expected = testing::traced_poses(trace, moments_ms);
   const render::CameraView view = render::make_camera_view({scene.camera.position, scene.camera.target, scene.camera.fov_y_degrees}, 854, 480);
   int compared = 0;
   for (const auto& [key, pose] : expected) {

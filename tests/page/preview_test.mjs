@@ -10,16 +10,9 @@ import fs from 'node:fs';
 import net from 'node:net';
 import os from 'node:os';
 import path from 'node:path';
-import { pathToFileURL } from 'node:url';
+import { check, finish, launchChromium } from '../support/browser.mjs';
 
 const [program, scratch, nodeModules] = process.argv.slice(2);
-const { chromium } = await import(pathToFileURL(path.resolve(nodeModules, 'playwright-core', 'index.mjs')).href);
-
-let failures = 0;
-function check(condition, what) {
-  console.log((condition ? 'ok     ' : 'FAILED ') + what);
-  if (!condition) failures += 1;
-}
 const sleep = (ms) => new Promise((done) => setTimeout(done, ms));
 async function until(what, test, seconds = 30) {
   const end = Date.now() + 1000 * seconds;
@@ -108,8 +101,7 @@ for (const entries of Object.values(os.networkInterfaces()))
   }
 
 // The page in Chromium.
-const browser = await chromium.launch({ executablePath: process.env.IMPULSE_CHROMIUM || '/usr/lib/chromium/chromium',
-                                        args: ['--no-sandbox', '--enable-unsafe-swiftshader'] });
+const browser = await launchChromium(nodeModules);
 const page = await browser.newPage({ viewport: { width: 1000, height: 700 } });
 const complaints = [];
 page.on('console', (message) => { if (message.type() === 'error') complaints.push(message.text()); });
@@ -180,5 +172,4 @@ check(signal === 'SIGINT' || code === 130, 'Ctrl-C stops the preview (' + code +
 check(!(await opens('127.0.0.1')), 'the port is closed after');
 if (signal === 'still running') server.kill('SIGKILL');
 
-console.log(failures === 0 ? 'all passed' : failures + ' failed');
-process.exit(failures === 0 ? 0 : 1);
+finish();

@@ -3,11 +3,10 @@
 //   node notebook_page.mjs NOTEBOOK.html NODE_MODULES
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
+import { launchChromium } from '../support/browser.mjs';
 
 const [notebook, nodeModules] = process.argv.slice(2);
-const { chromium } = await import(pathToFileURL(path.resolve(nodeModules, 'playwright-core', 'index.mjs')).href);
-const browser = await chromium.launch({ executablePath: process.env.IMPULSE_CHROMIUM || '/usr/lib/chromium/chromium',
-                                        args: ['--no-sandbox', '--enable-unsafe-swiftshader'] });
+const browser = await launchChromium(nodeModules);
 const page = await browser.newPage({ viewport: { width: 1100, height: 900 } });
 const complaints = [];
 page.on('pageerror', (error) => complaints.push(error.message));
