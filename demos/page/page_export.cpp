@@ -1,6 +1,10 @@
 #include "demos/page/page_export.h"
 
+#include "demos/film/marks.h"
+#include "demos/film/render_types.h"
+#include "demos/film/scene_draw_list.h"
 #include "demos/film/world_take.h"
+#include "render/camera_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -117,6 +121,88 @@ void body_json(std::ostream& out, const physics::Body& body, const Colour& colou
   out << '}';
 }
 
+// What the video marks on a frame, kept until the run's scales are known (they fit its largest
+// impulse and speed).
+struct MarkedFrame {
+  std::vector<BodyPose> poses;
+  std::vector<physics::Vec3> velocities;
+  std::vector<physics::ContactRecord> contacts;
+};
+
+// The marks as the video draws them (scene_draw_list, at the scene's camera): per frame its arrows
+// (origin, direction, colour), dots (position, colour, radius in pixels, largest radius in m: 0 for
+// none) and lines (from, to, colour, width in pixels), colours as indices into a palette; and the
+// legend, each arrow entry with the metres its round value is long.
+void write_marks(const Scene& scene, const WorldTake& take, const std::vector<MarkedFrame>& frames, std::ostream& out) {
+  const ArrowScales scales = arrow_scales(scene, take.summary());
+  std::vector<physics::Body> bodies = take.bodies();
+  std::vector<render::Colour> palette;
+  auto colour = [&](std::string& to, const render::Colour& c) {
+    size_t k = 0;
+    while (k < palette.size() && !(palette[k].r == c.r && palette[k].g == c.g && palette[k].b == c.b)) ++k;
+    if (k == palette.size()) palette.push_back(c);
+    to += ',';
+    to += std::to_string(k);
+  };
+  auto point = [](std::string& to, const render::Vec3f& p) {
+    for (int c = 0; c < 3; ++c) fixed(to, p[c], 4);
+  };
+  std::string written;
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const MarkedFrame& frame = frames[k];
+    for (size_t i = 0; i < bodies.size(); ++i) bodies[i].velocity = frame.velocities[i];
+    const render::DrawList list = scene_draw_list(scene, bodies, frame.poses, take.joints(), frame.contacts, scales, to_render(scene.camera));
+    std::string arrows, dots, lines;
+    for (const render::ArrowItem& arrow : list.arrows) {
+      point(arrows, arrow.origin);
+      point(arrows, arrow.direction);
+      colour(arrows, arrow.colour);
+    }
+    for (const render::PointItem& dot : list.points) {
+      point(dots, dot.position);
+      colour(dots, dot.colour);
+      fixed(dots, dot.radius_pixels, 1);
+      fixed(dots, std::isfinite(dot.largest_radius) ? dot.largest_radius : 0.0f, 4);
+    }
+    for (const render::LineItem& line : list.lines) {
+      point(lines, line.from);
+      point(lines, line.to);
+      colour(lines, line.colour);
+      fixed(lines, line.width_pixels, 1);
+    }
+    // Each list without its leading comma.
+    written += k > 0 ? ",[[" : "[[";
+    written.append(arrows, arrows.empty() ? 0 : 1);
+    written += "],[";
+    written.append(dots, dots.empty() ? 0 : 1);
+    written += "],[";
+    written.append(lines, lines.empty() ? 0 : 1);
+    written += "]]";
+  }
+  out << ",\"marks\":{\"frames\":[" << written << "],\"palette\":[";
+  for (size_t k = 0; k < palette.size(); ++k) {
+    if (k > 0) out << ',';
+    vector(out, physics::Vec3(palette[k].r, palette[k].g, palette[k].b));
+  }
+  // The video's legend, at its size: an arrow entry's pixels back into metres at the camera's target.
+  const render::Camera camera = to_render(scene.camera);
+  const render::CameraView view = render::make_camera_view(camera, scene.video.width, scene.video.height);
+  const double pixels_per_metre = view.pixels_per_metre(camera.target);
+  out << "],\"legend\":[";
+  bool first = true;
+  for (const render::LegendEntry& entry : legend(scene.draw, scales, view, camera.target, false)) {
+    out << (first ? "" : ",") << "{\"text\":";
+    text(out, entry.text);
+    out << ",\"colour\":";
+    vector(out, physics::Vec3(entry.colour.r, entry.colour.g, entry.colour.b));
+    out << ",\"dot\":" << (entry.dot ? "true" : "false") << ",\"metres\":";
+    number(out, pixels_per_metre > 0 ? entry.scale_pixels / pixels_per_metre : 0.0);
+    out << '}';
+    first = false;
+  }
+  out << "]}";
+}
+
 }  // namespace
 
 void write_json_string(std::ostream& out, const std::string& value) { text(out, value); }
@@ -168,6 +254,9 @@ void write_run_json(const Scene& scene, std::ostream& out) {
   // vx vy vz, wx wy wz to 1e-4 (m/s, rad/s: a resting body's jitter below it costs nothing).
   // Written after the frames.
   std::string motion;
+  const DrawOptions& draw = scene.draw;
+  const bool marked = draw.contact_points || draw.contact_normals || draw.impulses || draw.friction || draw.velocities || !take.joints().empty();
+  std::vector<MarkedFrame> marked_frames;
   for (long k = 0; k < frames; ++k) {
     const double time = double(k) / fps;
     while (!take.finished() && take.time() < time - 1e-9) take.step();
@@ -205,8 +294,11 @@ void write_run_json(const Scene& scene, std::ostream& out) {
       last_motion[i] = std::move(written);
     }
     motion += ']';
+    if (marked) marked_frames.push_back({sample.poses, sample.velocities, sample.contacts});
   }
-  out << "],\"motion\":[" << motion << "]}";
+  out << "],\"motion\":[" << motion << ']';
+  if (marked) write_marks(scene, take, marked_frames, out);
+  out << '}';
 }
 
 namespace {
@@ -234,6 +326,9 @@ void write_html(const std::string& script, std::ostream& out, bool live, const R
          "#panel { position: absolute; top: 64px; right: 16px; padding: 8px 14px 10px; border-radius: 8px; background: rgba(255, 255, 255, 0.94); font-size: 14px; box-shadow: 0 1px 6px rgba(0, 0, 0, 0.2); }\n"
          "#panel h2 { margin: 0 0 6px; font-size: 16px; } #panel td { padding: 1px 8px 1px 0; white-space: nowrap; } #panel td:nth-child(2) { font-family: 'DejaVu Sans Mono', monospace; font-size: 13px; }\n"
          "#panel p { margin: 6px 0 0; font-size: 12px; color: #555; max-width: 300px; }\n"
+         "#legend { position: absolute; left: 16px; bottom: 72px; padding: 6px 10px; border-radius: 8px; background: rgba(255, 255, 255, 0.9); font-size: 13px; line-height: 18px; }\n"
+         "#legend svg { vertical-align: middle; }\n"
+         "body.bare #legend { display: none; }\n"
          "body.bare #view { inset: auto; left: 0; top: 0; } body.bare #bar, body.bare h1, body.bare #caption { display: none; }\n</style></head><body>\n"
          "<div id=\"view\"></div>\n<h1 id=\"title\"></h1>\n<div id=\"caption\"></div>\n"
          "<div id=\"bar\"><button id=\"play\">Play</button><button id=\"back\" title=\"one frame back\">&#9664;</button>"
@@ -241,7 +336,7 @@ void write_html(const std::string& script, std::ostream& out, bool live, const R
          "<input id=\"time\" type=\"range\" min=\"0\" max=\"0\" step=\"1\" value=\"0\" aria-label=\"time\">"
          "<span id=\"clock\">t = 0.00 s</span><label>speed <select id=\"speed\"><option value=\"0.25\">\u00bc\u00d7</option>"
          "<option value=\"0.5\">\u00bd\u00d7</option><option value=\"1\" selected>1\u00d7</option><option value=\"2\">2\u00d7</option></select></label></div>\n"
-         "<div id=\"panel\" hidden></div><pre id=\"problem\"></pre><pre id=\"probe\"></pre><pre id=\"errors\"></pre>\n"
+         "<div id=\"legend\" hidden></div><div id=\"panel\" hidden></div><pre id=\"problem\"></pre><pre id=\"probe\"></pre><pre id=\"errors\"></pre>\n"
          "<script id=\"impulse-run\" type=\"application/json\">";
   run(out);
   out << "</script>\n";

@@ -1,6 +1,6 @@
 // `impulse export`: a scene's page, opened from disk in a real headless Chromium with WebGL. The
-// page draws each body where the trace of the same run puts it, fetches nothing, and reports no
-// error.
+// page draws each body where the trace of the same run puts it and each mark where the video's film
+// does, fetches nothing, and reports no error.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "demos/film/marks.h"
+#include "demos/film/scene_film.h"
 #include "demos/scene/scene_file.h"
 #include "render/camera_view.h"
 #include "tests/support/child_process.h"
@@ -39,6 +41,13 @@ struct Drawn {
   int width = 0, height = 0;  // the view's
   std::string errors;
   bool gl = false;
+  // The marks as drawn, by moment (ms): arrows (origin, vector), lines (ends), dots (place); each
+  // with its colour as "#rrggbb" (sRGB).
+  struct Mark {
+    std::vector<double> numbers;
+    std::string colour;
+  };
+  std::map<long, std::vector<Mark>> arrows, lines, dots;
 };
 Drawn opened(const fs::path& page, const fs::path& dir, const std::string& moments) {
   const testing::ChildResult browser = testing::run_child(
@@ -81,6 +90,16 @@ Drawn opened(const fs::path& page, const fs::path& dir, const std::string& momen
       drawn.gl = yes == "yes";
       continue;
     }
+    if (kind == "ARROW" || kind == "LINE" || kind == "DOT") {
+      double t;
+      words >> t;
+      Drawn::Mark mark;
+      mark.numbers.resize(kind == "DOT" ? 3 : 6);
+      for (double& v : mark.numbers) words >> v;
+      words >> mark.colour;
+      (kind == "ARROW" ? drawn.arrows : kind == "LINE" ? drawn.lines : drawn.dots)[std::lround(t * 1000)].push_back(mark);
+      continue;
+    }
     if (kind != "POSE") continue;
     double t;
     Pose pose(7);
@@ -93,13 +112,44 @@ Drawn opened(const fs::path& page, const fs::path& dir, const std::string& momen
   return drawn;
 }
 
+// "#rrggbb" of a colour of the renderer (sRGB 0..1), as the page writes a material's.
+std::string hex(const render::Colour& c) {
+  char text[8];
+  std::snprintf(text, sizeof text, "#%02x%02x%02x", int(std::lround(c.r * 255)), int(std::lround(c.g * 255)), int(std::lround(c.b * 255)));
+  return text;
+}
+bool same_colour(const std::string& a, const std::string& b) {
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(std::stoi(a.substr(1 + 2 * k, 2), nullptr, 16) - std::stoi(b.substr(1 + 2 * k, 2), nullptr, 16)) > 1) return false;
+  return true;
+}
+// Whether `drawn` holds a mark within 1e-3 m of `numbers` in `colour` (a line either way round).
+bool holds(const std::vector<Drawn::Mark>& drawn, const std::vector<double>& numbers, const std::string& colour, bool either_way = false) {
+  auto near = [&](const Drawn::Mark& mark, bool swapped) {
+    for (size_t k = 0; k < numbers.size(); ++k) {
+      const size_t at = swapped ? (k + 3) % 6 : k;
+      if (std::abs(mark.numbers[at] - numbers[k]) > 1e-3) return false;
+    }
+    return same_colour(mark.colour, colour);
+  };
+  return std::any_of(drawn.begin(), drawn.end(), [&](const Drawn::Mark& mark) { return near(mark, false) || (either_way && near(mark, true)); });
+}
+const std::vector<Drawn::Mark>& at(const std::map<long, std::vector<Drawn::Mark>>& marks, long ms) {
+  static const std::vector<Drawn::Mark> none;
+  const auto found = marks.find(ms);
+  return found == marks.end() ? none : found->second;
+}
+std::vector<double> numbers_of(const render::Vec3f& a, const render::Vec3f& b) { return {a.x(), a.y(), a.z(), b.x(), b.y(), b.z()}; }
+
 class EveryScene : public ::testing::TestWithParam<std::string> {};
 
 // Each catalogue scene's page, opened from disk at 854 x 480: at a third and two thirds of the
 // scene, every body where the trace of the same run puts it (its centre within 1e-4 m, its
 // orientation within 1e-4, either sign of the quaternion), and where the video's camera shows it
 // (its centre within 2 px of the renderer's projection of the traced centre); no error; WebGL;
-// nothing fetched; under 2 MB (the 1001-body heap: 25 MB).
+// nothing fetched; under 2 MB (the 1001-body heap: 25 MB). And the marks the video's film draws at
+// those moments (rods, ropes, velocity arrows; at real speed also contact dots and arrows), each
+// where the film puts it within 1e-3 m, in its colour.
 TEST_P(EveryScene, ThePageDrawsEachBodyWhereTheTraceAndTheVideosCameraPutIt) {
   const std::string name = GetParam();
   const fs::path dir = testing::scratch("page_test", name);
@@ -151,6 +201,40 @@ TEST_P(EveryScene, ThePageDrawsEachBodyWhereTheTraceAndTheVideosCameraPutIt) {
     EXPECT_NEAR(seen->second.second, pixel->y(), 2) << key.first << " at " << key.second << " ms: pixels down";
   }
   EXPECT_GE(compared, 1) << "bodies compared: the moments are no steps of the trace";
+
+  // The marks, as the video's film draws them at the same moments (its stills): its rods and ropes
+  // and velocity arrows; and where the video has no slow motion (which holds contacts on screen by
+  // the slowed clock), every arrow and dot too.
+  demos::Shots shots;
+  shots.video_frames = false;
+  for (const int share : {1, 2}) shots.stills.push_back(double(std::lround(scene.duration * share / 3 * fps)) / fps);  // the frames' own
+  demos::SceneFilm film(scene, 854, 480, shots);
+  const bool real_speed = !(scene.playback.slow_motion_impulse > 0);
+  for (int k = 0; k < film.picture_count(); ++k) {
+    demos::ScenePicture picture;
+    film.next(picture);
+    const long ms = std::lround(picture.time * 1000);
+    const render::DrawList& list = picture.draw_list;
+    for (const render::LineItem& line : list.lines)
+      EXPECT_TRUE(holds(at(drawn.lines, ms), numbers_of(line.from, line.to), hex(line.colour), true)) << "a line at " << ms << " ms";
+    EXPECT_EQ(at(drawn.lines, ms).size(), list.lines.size()) << "lines at " << ms << " ms";
+    int arrows = 0;
+    for (const render::ArrowItem& arrow : list.arrows) {
+      if (!real_speed && hex(arrow.colour) != hex(demos::mark_colour::velocity)) continue;
+      if (arrow.direction.norm() < 1e-6) continue;  // drawn as nothing
+      ++arrows;
+      EXPECT_TRUE(holds(at(drawn.arrows, ms), numbers_of(arrow.origin, arrow.direction), hex(arrow.colour)))
+          << "an arrow at " << ms << " ms from " << arrow.origin.transpose() << " along " << arrow.direction.transpose();
+    }
+    if (real_speed) {
+      EXPECT_EQ(int(at(drawn.arrows, ms).size()), arrows) << "arrows at " << ms << " ms";
+      EXPECT_EQ(at(drawn.dots, ms).size(), list.points.size()) << "dots at " << ms << " ms";
+      for (const render::PointItem& dot : list.points) {
+        const std::vector<double> place{dot.position.x(), dot.position.y(), dot.position.z()};
+        EXPECT_TRUE(holds(at(drawn.dots, ms), place, hex(dot.colour))) << "a dot at " << ms << " ms at " << dot.position.transpose();
+      }
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Catalogue, EveryScene, ::testing::ValuesIn(testing::catalogue_scene_names()),

@@ -92,7 +92,7 @@ camera.position.set(...run.camera.position);
 const controls = new OrbitControls(camera, renderer.domElement);
 controls.target.set(...run.camera.target);
 controls.update();
-controls.addEventListener('change', () => redraw());
+controls.addEventListener('change', () => { redraw(); sizeDots(); showLegend(); });
 
 const objects = run.bodies.map((body) => {
   const material = new THREE.MeshStandardMaterial({ color: colourOf(body.colour), roughness: 0.6, metalness: 0.0,
@@ -111,6 +111,125 @@ const objects = run.bodies.map((body) => {
   scene.add(object);
   return object;
 });
+
+// The video's marks at each frame (run.marks, as the film draws them at the scene's camera):
+// arrows (contact normals, impulses, friction, velocities), dots (contact points) and lines (rods,
+// ropes), in the video's colours, each frame's as the video shows it. Arrows and lines are solid
+// (a shaft and a cone, a thin cylinder); dots keep their size on screen and show through.
+const marks = run.marks || null;
+const markGroup = new THREE.Group();
+scene.add(markGroup);
+// Arrows over the bodies, as the video draws them (an impulse starts inside the body it pushes);
+// rods among them.
+const markMaterials = marks ? marks.palette.map((c) => new THREE.MeshBasicMaterial({ color: colourOf(c), depthTest: false })) : [];
+const rodMaterials = marks ? marks.palette.map((c) => new THREE.MeshBasicMaterial({ color: colourOf(c) })) : [];
+const unitCylinder = new THREE.CylinderGeometry(1, 1, 1, 12).translate(0, 0.5, 0);  // from y = 0 to 1
+const unitCone = new THREE.ConeGeometry(1, 1, 16).translate(0, 0.5, 0);
+const dotTexture = (() => {
+  const canvas = document.createElement('canvas');
+  canvas.width = canvas.height = 64;
+  const context = canvas.getContext('2d');
+  context.beginPath();
+  context.arc(32, 32, 30, 0, 2 * Math.PI);
+  context.fillStyle = '#fff';
+  context.fill();
+  return new THREE.CanvasTexture(canvas);
+})();
+const pools = { shafts: [], heads: [], rods: [], dots: [] };
+function pooled(pool, count, make) {
+  while (pool.length < count) {
+    const object = make();
+    markGroup.add(object);
+    pool.push(object);
+  }
+  pool.forEach((object, i) => { object.visible = i < count; });
+  return pool;
+}
+const up = new THREE.Vector3(0, 1, 0);
+// A unit piece (along y from 0 to 1) set from `from` along `along` (not unit), `radius` wide.
+function place(object, from, along, length, radius) {
+  object.position.copy(from);
+  object.quaternion.setFromUnitVectors(up, along.clone().normalize());
+  object.scale.set(radius, length, radius);
+}
+function showMarks(k) {
+  if (!marks) return;
+  const [arrows, dots, lines] = marks.frames[k];
+  const arrowCount = arrows.length / 7;
+  const shafts = pooled(pools.shafts, arrowCount, () => new THREE.Mesh(unitCylinder, markMaterials[0]));
+  const heads = pooled(pools.heads, arrowCount, () => new THREE.Mesh(unitCone, markMaterials[0]));
+  for (let i = 0; i < arrowCount; ++i) {
+    const a = arrows.slice(7 * i, 7 * i + 7);
+    const from = new THREE.Vector3(a[0], a[1], a[2]), along = new THREE.Vector3(a[3], a[4], a[5]);
+    const length = along.length();
+    if (length < 1e-6) { shafts[i].visible = heads[i].visible = false; continue; }
+    const head = Math.min(0.35 * length, 0.12);
+    place(shafts[i], from, along, length - head, Math.min(0.02, 0.1 * length));
+    place(heads[i], from.clone().addScaledVector(along, (length - head) / length), along, head, 0.4 * head);
+    shafts[i].material = heads[i].material = markMaterials[a[6]];
+    shafts[i].renderOrder = heads[i].renderOrder = 1;
+    shafts[i].userData.arrow = a;
+  }
+  const lineCount = lines.length / 8;
+  const rods = pooled(pools.rods, lineCount, () => new THREE.Mesh(unitCylinder, markMaterials[0]));
+  for (let i = 0; i < lineCount; ++i) {
+    const l = lines.slice(8 * i, 8 * i + 8);
+    const from = new THREE.Vector3(l[0], l[1], l[2]), to = new THREE.Vector3(l[3], l[4], l[5]);
+    const along = to.clone().sub(from);
+    place(rods[i], from, along.lengthSq() > 0 ? along : up, along.length(), 0.008);
+    rods[i].material = rodMaterials[l[6]];
+    rods[i].userData.line = l;
+  }
+  const dotCount = dots.length / 6;
+  const points = pooled(pools.dots, dotCount, () => new THREE.Sprite(new THREE.SpriteMaterial({ map: dotTexture, depthTest: false,
+                                                                                                 sizeAttenuation: false })));
+  for (let i = 0; i < dotCount; ++i) {
+    const d = dots.slice(6 * i, 6 * i + 6);
+    points[i].position.set(d[0], d[1], d[2]);
+    points[i].material.color.copy(markMaterials[d[3]].color);
+    points[i].userData.dot = d;
+    points[i].renderOrder = 2;
+  }
+  sizeDots();
+}
+// A dot `radius_pixels` across on screen, but no larger than its largest radius where it is.
+function sizeDots() {
+  const height = Math.max(1, view.clientHeight);
+  const metresPerPixel = (distance) => (2 * distance * Math.tan(THREE.MathUtils.degToRad(camera.fov) / 2)) / height;
+  for (const sprite of pools.dots) {
+    if (!sprite.visible) continue;
+    const [, , , , pixels, largest] = sprite.userData.dot;
+    const distance = camera.position.distanceTo(sprite.position);
+    const radius = largest > 0 ? Math.min(pixels, largest / metresPerPixel(distance)) : pixels;
+    // Without attenuation a sprite's scale s spans s / (2 tan(fov/2)) of the view's height.
+    sprite.scale.setScalar((2 * radius * 2 * Math.tan(THREE.MathUtils.degToRad(camera.fov) / 2)) / height);
+  }
+}
+
+// The video's legend for these marks: each arrow entry's round value drawn as long as it is at the
+// camera's target now.
+const legendBox = document.getElementById('legend');
+function showLegend() {
+  if (!marks || marks.legend.length === 0) return;
+  const height = Math.max(1, view.clientHeight);
+  const distance = camera.position.distanceTo(controls.target);
+  const pixelsPerMetre = height / (2 * distance * Math.tan(THREE.MathUtils.degToRad(camera.fov) / 2));
+  legendBox.replaceChildren();
+  for (const entry of marks.legend) {
+    const row = document.createElement('div');
+    const colour = '#' + colourOf(entry.colour).getHexString(THREE.SRGBColorSpace);
+    const svg = document.createElementNS('http://www.w3.org/2000/svg', 'svg');
+    const long = entry.dot ? 14 : Math.max(16, Math.min(140, entry.metres * pixelsPerMetre));
+    svg.setAttribute('width', String(entry.dot ? 14 : Math.ceil(long) + 2));
+    svg.setAttribute('height', '14');
+    svg.innerHTML = entry.dot ? `<circle cx="7" cy="7" r="4" fill="${colour}"/>`
+      : entry.metres > 0 ? `<path d="M0 7H${long - 7}" stroke="${colour}" stroke-width="3"/><path d="M${long - 8} 2L${long} 7L${long - 8} 12Z" fill="${colour}"/>`
+        : `<rect x="0" y="2" width="14" height="10" fill="${colour}"/>`;
+    row.append(svg, document.createTextNode(' ' + entry.text));
+    legendBox.append(row);
+  }
+  legendBox.hidden = false;
+}
 
 // Every frame's poses, decoded once: the run lists per frame the bodies that moved (index, then
 // x y z, w x y z); a body keeps its pose until it is listed again.
@@ -137,6 +256,7 @@ for (let k = 0; k < frameCount; ++k) {
 
 function showFrame(k) {
   redraw();
+  showMarks(k);
   const here = k * bodyCount * 7;
   for (let i = 0; i < bodyCount; ++i) {
     if (run.bodies[i].shape === 'plane') continue;
@@ -261,6 +381,8 @@ function resize() {
   renderer.setSize(width, height, false);
   camera.aspect = width / height;
   camera.updateProjectionMatrix();
+  sizeDots();
+  showLegend();
   redraw();
 }
 window.addEventListener('resize', resize);
@@ -303,6 +425,24 @@ if (probe) {
       lines.push(['POSE', (k / run.fps).toFixed(6), position.x, position.y, position.z, rotation.w, rotation.x, rotation.y, rotation.z, run.bodies[i].name].join(' '));
       const seen = position.clone().project(camera);
       lines.push(['PIXEL', (k / run.fps).toFixed(6), (seen.x + 1) / 2 * view.clientWidth, (1 - seen.y) / 2 * view.clientHeight, run.bodies[i].name].join(' '));
+    });
+    // The marks as drawn: each arrow's origin and vector (shaft and head together), each line's
+    // ends, each dot's place, with their colours (sRGB).
+    const time = (k / run.fps).toFixed(6);
+    const hex = (material) => '#' + material.color.getHexString(THREE.SRGBColorSpace);
+    pools.shafts.forEach((shaft, i) => {
+      if (!shaft.visible) return;
+      const head = pools.heads[i];
+      const along = up.clone().applyQuaternion(shaft.quaternion).multiplyScalar(shaft.scale.y + head.scale.y);
+      lines.push(['ARROW', time, shaft.position.x, shaft.position.y, shaft.position.z, along.x, along.y, along.z, hex(shaft.material)].join(' '));
+    });
+    pools.rods.forEach((rod) => {
+      if (!rod.visible) return;
+      const to = up.clone().applyQuaternion(rod.quaternion).multiplyScalar(rod.scale.y).add(rod.position);
+      lines.push(['LINE', time, rod.position.x, rod.position.y, rod.position.z, to.x, to.y, to.z, hex(rod.material)].join(' '));
+    });
+    pools.dots.forEach((dot) => {
+      if (dot.visible) lines.push(['DOT', time, dot.position.x, dot.position.y, dot.position.z, hex(dot.material)].join(' '));
     });
   }
   renderer.render(scene, camera);
