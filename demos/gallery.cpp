@@ -2,6 +2,7 @@
 
 #include "demos/html_text.h"
 #include "demos/film/render_scene.h"
+#include "demos/page/page_export.h"
 #include "demos/program.h"
 #include "demos/scene/scene_file.h"
 #include "physics/response_method.h"
@@ -119,6 +120,7 @@ int write_gallery(const std::string& scenes_directory, const std::string& out_di
     const std::string poster = beside(poster_path(video.string()));
     const std::string captions = beside(captions_path(video.string()));
     const std::string chapters = beside(chapters_path(video.string()));
+    const std::string interactive = beside(page_path(video.string()));
     page << "<section id=\"" << html(name) << "\">\n<h2>" << html(scene.title.empty() ? name : scene.title) << "</h2>\n"
          << "<video controls preload=\"metadata\"" << (poster.empty() ? "" : " poster=\"" + html(poster) + "\"")
          << " data-width=\"" << facts.width << "\" data-height=\"" << facts.height << "\" data-duration=\""
@@ -145,6 +147,9 @@ int write_gallery(const std::string& scenes_directory, const std::string& out_di
       }
       page << " (each link: that pane alone).</p>\n";
     }
+    if (!interactive.empty())
+      page << "<p class=\"files\"><a href=\"" << html(interactive) << "\">The interactive page</a>: the same run to play, scrub "
+           << "and orbit in the browser, and each body's numbers on a click.</p>\n";
     page << "<p class=\"files\">Render it yourself: <code>impulse render " << html(scene_file.string()) << "</code>";
     if (!captions.empty()) page << " · <a href=\"" << html(captions) << "\">captions</a>";
     if (!chapters.empty()) page << " · <a href=\"" << html(chapters) << "\">chapters</a>";

@@ -363,6 +363,10 @@ void write_live_page(const std::string& run_json, const std::string& state_json,
   write_html(script, out, true, [&](std::ostream& to) { to << run_json; }, state_json);
 }
 
+std::string page_path(const std::string& video_path) {
+  return std::filesystem::path(video_path).replace_extension(".html").string();
+}
+
 std::string page_script() {
   namespace fs = std::filesystem;
   std::error_code error;

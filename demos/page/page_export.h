@@ -29,6 +29,9 @@ void write_page(const Scene& scene, const std::string& script, std::ostream& out
 // camera and moment, and shows a scene's error over the last good run.
 void write_live_page(const std::string& run_json, const std::string& state_json, const std::string& script, std::ostream& out);
 
+// The page beside a video, as the catalogue writes it and the gallery links it: NAME.html.
+std::string page_path(const std::string& video_path);
+
 // The viewer's bundle: <prefix>/share/impulse/web/page.js beside an installed program, else the
 // build tree's. Throws std::runtime_error saying how to build it when neither is there.
 std::string page_script();

@@ -135,8 +135,16 @@ TEST(Gallery, ChromiumLoadsEveryVideoAndTrackAsRendered) {
   ASSERT_TRUE(catalogue.succeeded()) << catalogue.describe();
   const std::string index = contents(out / "index.html");
   for (const char* part : {"<video", "drop.mp4", "drop.png", "drop.vtt", "drop.chapters.vtt", "pair.mp4",
-                           "pair.pane-1.mp4", "pair.pane-2.mp4", "A ball dropped onto the ground."})
+                           "pair.pane-1.mp4", "pair.pane-2.mp4", "A ball dropped onto the ground.", "href=\"drop.html\"",
+                           "href=\"pair.html\""})
     EXPECT_NE(index.find(part), std::string::npos) << part;
+  // Each linked page is the scene's, as `impulse export` writes it.
+  for (const char* name : {"drop", "pair"}) {
+    const testing::ChildResult exported = testing::run_child(
+        {IMPULSE_PROGRAM, "-q", "export", (dir / "scenes" / (std::string(name) + ".toml")).string(), "-o", (dir / (std::string(name) + ".html")).string()});
+    ASSERT_TRUE(exported.succeeded()) << exported.describe();
+    EXPECT_EQ(contents(out / (std::string(name) + ".html")), contents(dir / (std::string(name) + ".html"))) << name;
+  }
   // Chapters at the landing (0.38 s: 0.7 m of fall) and the next bounce, 0.5 s or more later.
   const std::string chapters = contents(out / "drop.chapters.vtt");
   EXPECT_NE(chapters.find("Start\n"), std::string::npos) << chapters;
