@@ -1,6 +1,7 @@
 #include "demos/page/page_export.h"
 
 #include "demos/film/marks.h"
+#include "demos/film/playback_timeline.h"
 #include "demos/film/render_types.h"
 #include "demos/film/scene_draw_list.h"
 #include "demos/film/world_take.h"
@@ -297,6 +298,17 @@ void write_run_json(const Scene& scene, std::ostream& out) {
     if (marked) marked_frames.push_back({sample.poses, sample.velocities, sample.contacts});
   }
   out << "],\"motion\":[" << motion << ']';
+  // The video's playback: simulated s per second of video at each frame (slower around impacts),
+  // and the speed outside them.
+  const PlaybackTimeline timeline(scene.playback, take.summary().impact_times, scene.duration, fps);
+  out << ",\"playback_speed\":";
+  number(out, scene.playback.speed);
+  out << ",\"speeds\":[";
+  for (long k = 0; k < frames; ++k) {
+    if (k > 0) out << ',';
+    number(out, timeline.speed_at(double(k) / fps));
+  }
+  out << ']';
   if (marked) write_marks(scene, take, marked_frames, out);
   out << '}';
 }

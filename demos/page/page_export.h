@@ -17,7 +17,7 @@ void write_json_string(std::ostream& out, const std::string& value);
 // bodies whose pose changed since the frame before, each as its index then x y z, w x y z; and
 // likewise their velocity and spin after the frame's last step, index then vx vy vz, wx wy wz; and
 // what the video marks on each frame (contact points, normals, impulses, velocities, rods), with
-// its legend, where the scene draws any.
+// its legend, where the scene draws any; and the video's playback speed at each frame.
 void write_run_json(const Scene& scene, std::ostream& out);
 
 // The whole page: `script` is the viewer's bundle (page_script()).

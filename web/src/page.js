@@ -345,13 +345,27 @@ const speed = document.getElementById('speed');
 slider.max = String(frameCount - 1);
 let frame = 0;
 let playing = false;
-let started = 0;   // ms: when frame 0 would have been shown at this speed
+let shownTime = 0;  // s of simulated time played to
+let lastTick = 0;   // ms: when it was
+// Simulated s per s of playing at a frame: the video's (slower around impacts), times the chosen.
+const rateAt = (k) => (run.speeds ? run.speeds[Math.max(0, Math.min(frameCount - 1, k))] : 1) * Number(speed.value);
+const slowAt = (k) => run.speeds && run.speeds[k] < 0.999 * run.playback_speed;
+// Plays on by `seconds` of real time, at each moment's rate (a tenth of a frame at a time).
+function advance(seconds) {
+  let left = seconds;
+  while (left > 0 && shownTime < (frameCount - 1) / run.fps) {
+    const piece = Math.min(left, 0.1 / run.fps / Math.max(rateAt(Math.floor(shownTime * run.fps + 1e-9)), 1e-3));
+    shownTime += piece * rateAt(Math.floor(shownTime * run.fps + 1e-9));
+    left -= piece;
+  }
+  return shownTime;
+}
 const caption = document.getElementById('caption');
 function setFrame(k) {
   frame = Math.max(0, Math.min(frameCount - 1, k));
   slider.value = String(frame);
   const time = frame / run.fps;
-  clock.textContent = 't = ' + time.toFixed(2) + ' s';
+  clock.textContent = 't = ' + time.toFixed(2) + ' s' + (slowAt(frame) ? '  slow motion \u00d7' + (run.speeds[frame] / run.playback_speed).toFixed(2) : '');
   const shown = run.captions.find((c) => c.start <= time && time < c.end);
   caption.textContent = shown ? shown.text : '';
   showFrame(frame);
@@ -362,7 +376,8 @@ function play(on) {
   playButton.textContent = on ? 'Pause' : 'Play';
   if (on) {
     if (frame >= frameCount - 1) setFrame(0);
-    started = performance.now() - (1000 * frame) / (run.fps * Number(speed.value));
+    shownTime = frame / run.fps;
+    lastTick = performance.now();
   }
 }
 playButton.addEventListener('click', () => play(!playing));
@@ -390,7 +405,10 @@ resize();
 
 renderer.setAnimationLoop(() => {
   if (playing) {
-    const k = Math.floor(((performance.now() - started) / 1000) * run.fps * Number(speed.value));
+    const now = performance.now();
+    advance((now - lastTick) / 1000);
+    lastTick = now;
+    const k = Math.floor(shownTime * run.fps + 1e-9);
     if (k >= frameCount - 1) { setFrame(frameCount - 1); play(false); } else if (k !== frame) setFrame(k);
   }
   if (stale) {
@@ -496,4 +514,6 @@ function pixelOf(name) {
   const box = renderer.domElement.getBoundingClientRect();
   return [box.left + ((seen.x + 1) / 2) * box.width, box.top + ((1 - seen.y) / 2) * box.height];
 }
-window.impulsePage = { run, frameCount, setFrame, errors, camera, controls, version, frame: () => frame, pixelOf };
+// `advance` for a test: from frame k, how far `seconds` of playing take the simulated time.
+const playedFrom = (k, seconds) => { shownTime = k / run.fps; return advance(seconds); };
+window.impulsePage = { run, frameCount, setFrame, errors, camera, controls, version, frame: () => frame, pixelOf, playedFrom };
