@@ -1,5 +1,8 @@
 #include "demos/page/page_glb.h"
 
+#include "demos/film/marks.h"
+#include "demos/film/render_types.h"
+#include "demos/film/scene_draw_list.h"
 #include "demos/film/world_take.h"
 
 #include <tiny_gltf.h>
@@ -140,6 +143,60 @@ void mesh(Geometry& g, const physics::Mesh& mesh) {
   }
 }
 
+// An arrow 1 long along +y from the origin: a shaft of radius kShaft, then a cone of radius kHead
+// over its last kHeadShare. An arrow shorter than kFullWidth m is drawn thinner in proportion.
+constexpr double kShaft = 0.02, kHead = 0.05, kHeadShare = 0.25, kFullWidth = 0.4;
+void arrow(Geometry& g) {
+  const double neck = 1 - kHeadShare;
+  const Vec3 down(0, -1, 0);
+  uint32_t first = uint32_t(g.positions.size() / 3);
+  for (const double y : {neck, 0.0})
+    for (int segment = 0; segment <= kSegments; ++segment) {
+      const Vec3 d = on_sphere(kRings / 2, segment);
+      g.vertex(kShaft * d + Vec3(0, y, 0), d);
+    }
+  g.join_rows(first, 2, kSegments);
+  first = uint32_t(g.positions.size() / 3);
+  for (const double y : {1.0, neck})  // the cone's side: its tip as a row of its own
+    for (int segment = 0; segment <= kSegments; ++segment) {
+      const Vec3 d = on_sphere(kRings / 2, segment);
+      g.vertex((y == 1.0 ? 0.0 : kHead) * d + Vec3(0, y, 0), kHeadShare * d + kHead * Vec3::UnitY());
+    }
+  g.join_rows(first, 2, kSegments);
+  for (const double y : {0.0, neck}) {
+    std::vector<Vec3> cap;
+    for (int segment = 0; segment < kSegments; ++segment) cap.push_back((y == 0 ? kShaft : kHead) * on_sphere(kRings / 2, segment) + Vec3(0, y, 0));
+    g.polygon(cap, down);
+  }
+}
+
+// The kind of mark an arrow of `colour` is (marks.h), "... faint" where it is that mark's colour
+// faded towards white (a resting contact's).
+std::string arrow_kind(const render::Colour& colour) {
+  const std::pair<render::Colour, const char*> kinds[] = {{mark_colour::contact_normal, "normal"},
+                                                          {mark_colour::normal_impulse, "impulse"},
+                                                          {mark_colour::friction_impulse, "friction"},
+                                                          {mark_colour::velocity, "velocity"}};
+  const float c[3] = {colour.r, colour.g, colour.b};
+  for (const auto& [mark, name] : kinds) {
+    const float m[3] = {mark.r, mark.g, mark.b};
+    float fade = NAN;  // c = m + (1 - m) fade in every channel
+    bool faded = true;
+    for (int k = 0; k < 3; ++k) {
+      if (1 - m[k] < 1e-3f) {
+        faded = faded && std::abs(c[k] - m[k]) < 1e-4f;
+        continue;
+      }
+      const float f = (c[k] - m[k]) / (1 - m[k]);
+      if (std::isnan(fade)) fade = f;
+      faded = faded && std::abs(f - fade) < 1e-3f;
+    }
+    if (faded && std::abs(fade) < 1e-4f) return name;
+    if (faded && fade > 0 && fade < 1) return std::string(name) + " faint";
+  }
+  return "arrow";
+}
+
 // A plane as a square of side `size` in it, centred on the point of it nearest `centre`, facing
 // its normal. World coordinates: a plane's node has no transform.
 void plane(Geometry& g, const physics::Shape& shape, const Vec3& centre, double size) {
@@ -204,6 +261,30 @@ class GlbBuilder {
     return int(model_.meshes.size() - 1);
   }
 
+  // The mesh `of`'s geometry again with another material.
+  int mesh_like(int of, int material, const std::string& name) {
+    tinygltf::Mesh mesh = model_.meshes.at(size_t(of));
+    mesh.name = name;
+    mesh.primitives.at(0).material = material;
+    model_.meshes.push_back(std::move(mesh));
+    return int(model_.meshes.size() - 1);
+  }
+
+  // A flat colour: unlit where the viewer knows KHR_materials_unlit, else matte.
+  int unlit(const render::Colour& colour) {
+    tinygltf::Material material;
+    char name[64];
+    std::snprintf(name, sizeof name, "unlit sRGB %.3f %.3f %.3f", colour.r, colour.g, colour.b);
+    material.name = name;
+    material.pbrMetallicRoughness.baseColorFactor = {linear(colour.r), linear(colour.g), linear(colour.b), 1.0};
+    material.pbrMetallicRoughness.metallicFactor = 0.0;
+    material.extensions["KHR_materials_unlit"] = tinygltf::Value(tinygltf::Value::Object());
+    if (std::find(model_.extensionsUsed.begin(), model_.extensionsUsed.end(), "KHR_materials_unlit") == model_.extensionsUsed.end())
+      model_.extensionsUsed.push_back("KHR_materials_unlit");
+    model_.materials.push_back(std::move(material));
+    return int(model_.materials.size() - 1);
+  }
+
   // One material per sRGB colour and sidedness.
   int material(const Colour& colour, bool double_sided) {
     const auto key = std::make_tuple(colour.r, colour.g, colour.b, double_sided);
@@ -259,7 +340,7 @@ std::string shape_key(const physics::Shape& s, int material) {
 
 }  // namespace
 
-void write_glb(const Scene& scene, std::ostream& out) {
+void write_glb(const Scene& scene, std::ostream& out, bool marks) {
   WorldTake take(scene);
   const int fps = scene.video.fps;
   // The frames the page samples (write_run_json), as the video's at real speed.
@@ -278,6 +359,13 @@ void write_glb(const Scene& scene, std::ostream& out) {
   for (const physics::Joint& joint : take.joints())
     if (joint.type == physics::JointType::distance) rods.push_back(&joint);
   std::vector<double> rod_poses(size_t(frames) * rods.size() * 10);
+  // What the video marks on each frame, drawn once the run's arrow scales are known.
+  struct Marked {
+    std::vector<BodyPose> poses;
+    std::vector<Vec3> velocities;
+    std::vector<physics::ContactRecord> contacts;
+  };
+  std::vector<Marked> marked;
   FrameSample sample;
   for (long k = 0; k < frames; ++k) {
     const double time = double(k) / fps;
@@ -311,6 +399,19 @@ void write_glb(const Scene& scene, std::ostream& out) {
       const Vec3 middle = (a + b) / 2;
       const double values[10] = {middle.x(), middle.y(), middle.z(), q.x(), q.y(), q.z(), q.w(), 1, std::max(length, 1e-6), 1};
       std::copy(values, values + 10, pose);
+    }
+    if (marks) marked.push_back({sample.poses, sample.velocities, sample.contacts});
+  }
+
+  // The video's arrows per frame, as the page's marks (page_export.cpp): its draw list at the
+  // scene's camera, each body's velocity the frame's.
+  std::vector<std::vector<render::ArrowItem>> arrows;
+  if (marks) {
+    const ArrowScales scales = arrow_scales(scene, take.summary());
+    std::vector<physics::Body> moving = take.bodies();
+    for (const Marked& frame : marked) {
+      for (size_t i = 0; i < count; ++i) moving[i].velocity = frame.velocities[i];
+      arrows.push_back(scene_draw_list(scene, moving, frame.poses, take.joints(), frame.contacts, scales, to_render(scene.camera)).arrows);
     }
   }
 
@@ -408,13 +509,86 @@ void write_glb(const Scene& scene, std::ostream& out) {
     world.nodes.push_back(int(model.nodes.size() - 1));
   }
 
+  // The arrows: per kind (colour) its slots, each slot's pose per frame (x y z, quaternion x y z w,
+  // scale x y z), a frame's arrows of a kind in its first slots, the rest at scale 0.
+  struct Kind {
+    render::Colour colour;
+    std::string name;
+    size_t slots = 0;
+    std::vector<double> poses;  // frames × slots × 10
+    std::vector<int> nodes;
+  };
+  std::vector<Kind> kinds;
+  auto kind_of = [&](const render::Colour& c) {
+    size_t k = 0;
+    while (k < kinds.size() && !(kinds[k].colour.r == c.r && kinds[k].colour.g == c.g && kinds[k].colour.b == c.b)) ++k;
+    if (k == kinds.size()) kinds.push_back({c, arrow_kind(c), 0, {}, {}});
+    return k;
+  };
+  for (const auto& frame : arrows) {
+    std::vector<size_t> used(kinds.size());
+    for (const render::ArrowItem& a : frame) {
+      const size_t k = kind_of(a.colour);
+      used.resize(kinds.size());
+      kinds[k].slots = std::max(kinds[k].slots, ++used[k]);
+    }
+  }
+  for (Kind& kind : kinds) {
+    kind.poses.resize(size_t(frames) * kind.slots * 10, 0.0);
+    for (size_t at = 6; at < kind.poses.size(); at += 10) kind.poses[at] = 1;  // w
+  }
+  for (size_t k = 0; k < arrows.size(); ++k) {
+    std::vector<size_t> used(kinds.size());
+    for (const render::ArrowItem& a : arrows[k]) {
+      const size_t n = kind_of(a.colour);
+      Kind& kind = kinds[n];
+      const Vec3 origin = a.origin.cast<double>(), along = a.direction.cast<double>();
+      const double length = along.norm();
+      const Quat q = Quat::FromTwoVectors(Vec3::UnitY(), along).normalized();
+      const double side = std::min(1.0, length / kFullWidth);
+      const double values[10] = {origin.x(), origin.y(), origin.z(), q.x(), q.y(), q.z(), q.w(), side, length, side};
+      std::copy(values, values + 10, &kind.poses[(k * kind.slots + used[n]++) * 10]);
+    }
+  }
+  if (marks) {
+    tinygltf::Node group;
+    group.name = "marks";
+    Geometry g;
+    arrow(g);
+    int first = -1;  // the arrow's geometry, written once
+    for (Kind& kind : kinds) {
+      const int material = builder.unlit(kind.colour);
+      const int mesh = first < 0 ? builder.mesh(g, material, "arrow " + kind.name) : builder.mesh_like(first, material, "arrow " + kind.name);
+      if (first < 0) first = mesh;
+      tinygltf::Node parent;
+      parent.name = kind.name;
+      for (size_t slot = 0; slot < kind.slots; ++slot) {
+        tinygltf::Node node;
+        node.name = kind.name + " " + std::to_string(slot + 1);
+        node.mesh = mesh;
+        const double* pose = &kind.poses[slot * 10];
+        node.translation.assign(pose, pose + 3);
+        node.rotation.assign(pose + 3, pose + 7);
+        node.scale.assign(pose + 7, pose + 10);
+        model.nodes.push_back(std::move(node));
+        kind.nodes.push_back(int(model.nodes.size() - 1));
+        parent.children.push_back(kind.nodes.back());
+      }
+      model.nodes.push_back(std::move(parent));
+      group.children.push_back(int(model.nodes.size() - 1));
+    }
+    model.nodes.push_back(std::move(group));
+    world.nodes.push_back(int(model.nodes.size() - 1));
+  }
+
   // The animation: the bodies and rods whose pose changes, each frame's translation and rotation
   // (and a rod's scale).
   tinygltf::Animation run;
   run.name = "run";
   int times = -1;
   // The values `data[first + k * stride + c]` for frames k and c in [from, from + width).
-  auto channel = [&](int node, const char* path, const std::vector<double>& data, size_t first, size_t stride, int from, int width) {
+  auto channel = [&](int node, const char* path, const std::vector<double>& data, size_t first, size_t stride, int from, int width,
+                     const char* interpolation = "LINEAR") {
     if (times < 0) {
       std::vector<float> seconds;
       for (long k = 0; k < frames; ++k) seconds.push_back(float(double(k) / fps));
@@ -426,7 +600,7 @@ void write_glb(const Scene& scene, std::ostream& out) {
     tinygltf::AnimationSampler sampler;
     sampler.input = times;
     sampler.output = builder.floats(values, width, 0);
-    sampler.interpolation = "LINEAR";
+    sampler.interpolation = interpolation;
     run.samplers.push_back(std::move(sampler));
     tinygltf::AnimationChannel aim;
     aim.sampler = int(run.samplers.size() - 1);
@@ -449,6 +623,13 @@ void write_glb(const Scene& scene, std::ostream& out) {
       channel(rod_nodes[r], "translation", rod_poses, r * 10, rods.size() * 10, 0, 3);
       channel(rod_nodes[r], "rotation", rod_poses, r * 10, rods.size() * 10, 3, 4);
       channel(rod_nodes[r], "scale", rod_poses, r * 10, rods.size() * 10, 7, 3);
+    }
+  for (const Kind& kind : kinds)  // stepped: an arrow is the frame's until the next
+    for (size_t slot = 0; slot < kind.slots; ++slot) {
+      const size_t stride = kind.slots * 10;
+      channel(kind.nodes[slot], "translation", kind.poses, slot * 10, stride, 0, 3, "STEP");
+      channel(kind.nodes[slot], "rotation", kind.poses, slot * 10, stride, 3, 4, "STEP");
+      channel(kind.nodes[slot], "scale", kind.poses, slot * 10, stride, 7, 3, "STEP");
     }
   if (!run.channels.empty()) model.animations.push_back(std::move(run));
 

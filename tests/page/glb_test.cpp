@@ -1,6 +1,8 @@
 // `impulse export --format glb`: a scene's run as glTF 2.0 binary. The Khronos validator finds no
 // error or warning in it; read back with tinygltf, it holds a node per body with the body's name,
 // colour and size, and its animation puts each body where the trace of the same run puts it.
+// With --marks, a node "marks" holds the video's arrows: at every frame those shown are the frame's
+// draw list's, the other slots at scale 0.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -15,6 +17,10 @@
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
+#include "demos/film/marks.h"
+#include "demos/film/render_types.h"
+#include "demos/film/scene_draw_list.h"
+#include "demos/film/world_take.h"
 #include "demos/scene/scene_file.h"
 #include "tests/support/child_process.h"
 #include "tests/support/traced_poses.h"
@@ -74,7 +80,7 @@ std::vector<float> floats(const tinygltf::Model& model, int index, int width) {
 double linear(double srgb) { return srgb <= 0.04045 ? srgb / 12.92 : std::pow((srgb + 0.055) / 1.055, 2.4); }
 
 // What one scene's glb holds, against the scene and the trace of the same run.
-void check_glb(const std::string& source, const fs::path& glb, const fs::path& dir, const std::string& name) {
+void check_glb(const std::string& source, const fs::path& glb, const fs::path& dir, const std::string& name, bool marks = false) {
   const demos::Scene scene = demos::load_scene(source);
   ASSERT_EQ(contents(glb).substr(0, 4), "glTF");
 
@@ -92,14 +98,16 @@ void check_glb(const std::string& source, const fs::path& glb, const fs::path& d
 
   // A node per body, by name, with its mesh; the camera; the rods in "joints".
   std::map<std::string, int> node_of;
-  int camera_node = -1, joints_node = -1;
+  int camera_node = -1, joints_node = -1, marks_node = -1;
   for (const int n : model.scenes[0].nodes) {
     const tinygltf::Node& node = model.nodes.at(size_t(n));
     if (node.camera >= 0) camera_node = n;
     else if (node.mesh >= 0) node_of[node.name] = n;
     else if (node.name == "joints") joints_node = n;
-    else ADD_FAILURE() << "a node neither body, camera nor joints: " << node.name;
+    else if (node.name == "marks") marks_node = n;
+    else ADD_FAILURE() << "a node neither body, camera, joints nor marks: " << node.name;
   }
+  EXPECT_EQ(marks_node >= 0, marks) << name << ": a node \"marks\" with --marks only";
   ASSERT_EQ(node_of.size(), scene.bodies.size()) << "a node per body, each by its own name";
   for (size_t i = 0; i < scene.bodies.size(); ++i) {
     const physics::BodyDef& body = scene.bodies[i];
@@ -236,6 +244,132 @@ void check_glb(const std::string& source, const fs::path& glb, const fs::path& d
     }
   }
   EXPECT_EQ(rod_of.size(), rods) << name << ": a rod per rod or rope joint";
+}
+
+// The arrows of each video frame as the video (and the page) draws them: the draw list at the
+// scene's camera, with the run's arrow scales.
+std::vector<std::vector<render::ArrowItem>> drawn_arrows(const demos::Scene& scene) {
+  demos::WorldTake take(scene);
+  const int fps = scene.video.fps;
+  const long frames = std::max(1L, std::lround(std::ceil(scene.duration * fps - 0.5)));
+  std::vector<demos::FrameSample> samples(static_cast<size_t>(frames));
+  for (long k = 0; k < frames; ++k) {
+    const double time = double(k) / fps;
+    while (!take.finished() && take.time() < time - 1e-9) take.step();
+    take.sample(time, time, samples[size_t(k)]);
+  }
+  const demos::ArrowScales scales = demos::arrow_scales(scene, take.summary());
+  std::vector<physics::Body> bodies = take.bodies();
+  std::vector<std::vector<render::ArrowItem>> arrows;
+  for (const demos::FrameSample& sample : samples) {
+    for (size_t i = 0; i < bodies.size(); ++i) bodies[i].velocity = sample.velocities[i];
+    arrows.push_back(demos::scene_draw_list(scene, bodies, sample.poses, take.joints(), sample.contacts, scales,
+                                            demos::to_render(scene.camera)).arrows);
+  }
+  return arrows;
+}
+
+// The glb's arrows against the draw lists, at every frame: the slots shown (scale not 0) are the
+// frame's arrows, origin and tip to 1e-4 m, colour (linear) to 1e-3; the others at scale 0.
+// Returns the arrows compared.
+size_t check_marks(const demos::Scene& scene, const tinygltf::Model& model, const std::string& name) {
+  const std::vector<std::vector<render::ArrowItem>> expected = drawn_arrows(scene);
+  int marks = -1;
+  for (const int n : model.scenes.at(0).nodes)
+    if (model.nodes.at(size_t(n)).name == "marks") marks = n;
+  if (marks < 0) {
+    ADD_FAILURE() << name << ": no node \"marks\"";
+    return 0;
+  }
+  std::map<std::pair<int, std::string>, const tinygltf::AnimationSampler*> channel;
+  for (const tinygltf::Animation& animation : model.animations)
+    for (const tinygltf::AnimationChannel& c : animation.channels) channel[{c.target_node, c.target_path}] = &animation.samplers.at(size_t(c.sampler));
+  // Each slot: its colour and its keys (translation, rotation, scale) per frame.
+  struct Slot {
+    std::string name;
+    std::vector<double> colour;
+    std::vector<float> at, turn, scale;
+  };
+  std::vector<Slot> slots;
+  const long frames = long(expected.size());
+  for (const int kind : model.nodes[size_t(marks)].children)
+    for (const int n : model.nodes.at(size_t(kind)).children) {
+      const tinygltf::Node& node = model.nodes.at(size_t(n));
+      Slot slot{node.name, {}, {}, {}, {}};
+      EXPECT_EQ(slot.name.rfind(model.nodes[size_t(kind)].name + " ", 0), 0u) << slot.name << " under " << model.nodes[size_t(kind)].name;
+      EXPECT_GE(node.mesh, 0) << slot.name;
+      if (node.mesh < 0) continue;
+      const tinygltf::Material& material = model.materials.at(size_t(model.meshes.at(size_t(node.mesh)).primitives.at(0).material));
+      EXPECT_TRUE(material.extensions.contains("KHR_materials_unlit")) << slot.name;
+      slot.colour = material.pbrMetallicRoughness.baseColorFactor;
+      for (const auto& [path, width, keys] : {std::tuple{"translation", 3, &slot.at}, std::tuple{"rotation", 4, &slot.turn}, std::tuple{"scale", 3, &slot.scale}}) {
+        const auto found = channel.find({n, path});
+        if (found == channel.end()) {
+          ADD_FAILURE() << name << ": " << slot.name << " has no " << path;
+          return 0;
+        }
+        EXPECT_EQ(found->second->interpolation, "STEP") << slot.name;
+        const std::vector<float> times = floats(model, found->second->input, 1);
+        EXPECT_EQ(long(times.size()), frames) << slot.name << ": a key per video frame";
+        for (size_t k = 0; k < times.size(); ++k) EXPECT_NEAR(times[k], double(k) / scene.video.fps, 1e-5);
+        *keys = floats(model, found->second->output, width);
+        if (long(keys->size()) != frames * width) {
+          ADD_FAILURE() << name << ": " << slot.name << "'s " << path << " keys";
+          return 0;
+        }
+      }
+      slots.push_back(std::move(slot));
+    }
+  size_t compared = 0;
+  for (long k = 0; k < frames; ++k) {
+    std::vector<bool> matched(slots.size());
+    size_t shown = 0;
+    for (const Slot& slot : slots) {
+      const float* scale = &slot.scale[size_t(k) * 3];
+      if (scale[1] != 0) ++shown;
+      else EXPECT_TRUE(scale[0] == 0 && scale[2] == 0) << name << ": " << slot.name << " at frame " << k << ": an empty slot at scale 0";
+    }
+    EXPECT_EQ(shown, expected[size_t(k)].size()) << name << ": frame " << k << "'s arrows";
+    for (const render::ArrowItem& arrow : expected[size_t(k)]) {
+      const Eigen::Vector3d origin = arrow.origin.cast<double>(), tip = (arrow.origin + arrow.direction).cast<double>();
+      const Eigen::Vector3d colour(linear(arrow.colour.r), linear(arrow.colour.g), linear(arrow.colour.b));
+      bool found = false;
+      for (size_t s = 0; s < slots.size() && !found; ++s) {
+        const Slot& slot = slots[s];
+        const float *at = &slot.at[size_t(k) * 3], *turn = &slot.turn[size_t(k) * 4], *scale = &slot.scale[size_t(k) * 3];
+        if (matched[s] || scale[1] == 0 || (Eigen::Vector3d(slot.colour[0], slot.colour[1], slot.colour[2]) - colour).norm() > 1e-3) continue;
+        const Eigen::Vector3d from(at[0], at[1], at[2]);
+        const Eigen::Vector3d to = from + Eigen::Quaterniond(turn[3], turn[0], turn[1], turn[2]).normalized() * Eigen::Vector3d(0, scale[1], 0);
+        if ((from - origin).norm() < 1e-4 && (to - tip).norm() < 1e-4) found = matched[s] = true;
+      }
+      EXPECT_TRUE(found) << name << ": frame " << k << ": no slot shows the arrow from " << origin.transpose() << " to " << tip.transpose();
+      compared += found;
+    }
+  }
+  return compared;
+}
+
+// --marks: the glb validates and holds the video's arrows (bounce: impulses, friction and
+// velocities; s5_boxes: contact normals and impulses), each frame's as its draw list; without it
+// no node "marks".
+TEST(Glb, MarksHoldTheVideosArrowsAtEveryFrame) {
+  for (const std::string name : {"bounce", "s5_boxes"}) {
+    const fs::path dir = testing::scratch("glb_test", "marks_" + name);
+    const std::string source = std::string(IMPULSE_SOURCE_DIR) + "/assets/scenes/" + name + ".toml";
+    const fs::path glb = dir / (name + ".glb");
+    const testing::ChildResult exported =
+        testing::run_child({IMPULSE_PROGRAM, "-q", "export", source, "--format", "glb", "--marks", "-o", glb.string()});
+    ASSERT_TRUE(exported.succeeded()) << exported.describe();
+    check_glb(source, glb, dir, name, true);
+
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::string error, warning;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &error, &warning, glb.string())) << error << warning;
+    const size_t compared = check_marks(demos::load_scene(source), model, name);
+    EXPECT_GE(compared, 100u) << name << ": arrows compared";
+    ::testing::Test::RecordProperty(name + "_arrows", int(compared));
+  }
 }
 
 class EveryScene : public ::testing::TestWithParam<std::string> {};
