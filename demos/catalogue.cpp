@@ -83,11 +83,11 @@ int render_in_turn(const std::vector<fs::path>& scenes, const std::vector<size_t
       const Comparison loaded = load_panes(scene.string(), overrides, options);  // the file parsed once
       code = render_loaded(loaded, options, progress);
       render_panes_alone(loaded, options.video_path, overrides, progress);
-      // Its interactive page beside it, `impulse export`'s (the file's own values, not a pane's),
-      // which the gallery links.
+      // Its interactive page beside it, `impulse export`'s (the file's own video settings), which
+      // the gallery links.
       static const std::string script = demos::page_script();
-      const demos::Scene own = load(SceneFile(scene.string()), overrides.scene_arguments, false);
-      render::write_file(demos::page_path(options.video_path), [&](std::ostream& out) { demos::write_page(own, script, out); });
+      const Comparison own = load_panes(scene.string(), overrides.scene_arguments);
+      render::write_file(demos::page_path(options.video_path), [&](std::ostream& out) { demos::write_page(own.panes, script, out); });
     } catch (const std::exception& error) {
       code = report(error);
     }

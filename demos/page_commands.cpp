@@ -5,6 +5,7 @@
 #include "demos/page/page_export.h"
 #include "demos/page/page_glb.h"
 #include "demos/page/page_preview.h"
+#include "demos/program.h"
 #include "render/part_file.h"
 
 #include <cstdio>
@@ -19,6 +20,7 @@ struct ExportArguments {
   std::string scene_path;
   std::string out_path;  // -o; empty: out/NAME.html (or .glb)
   std::string format;    // html or glb; empty: glb where -o ends in .glb, else html
+  bool marks = false;    // glb: the video's arrows too (the page always has them)
   SceneArguments scene;
 };
 
@@ -26,30 +28,32 @@ int export_page(const ExportArguments& arguments) {
   namespace fs = std::filesystem;
   std::string format = arguments.format;
   if (format.empty()) format = fs::path(arguments.out_path).extension() == ".glb" ? "glb" : "html";
-  const Scene scene = load(SceneFile(arguments.scene_path), arguments.scene, false);
   const std::string script = format == "html" ? page_script() : "";
   const std::string path = arguments.out_path.empty()
                                ? (fs::path("out") / fs::path(arguments.scene_path).stem()).string() + "." + format
                                : arguments.out_path;
   render::write_file(path, [&](std::ostream& out) {
-    if (format == "glb") write_glb(scene, out);
-    else write_page(scene, script, out);
+    if (format == "glb") write_glb(load(SceneFile(arguments.scene_path), arguments.scene, false), out, arguments.marks);
+    else write_page(load_panes(arguments.scene_path, arguments.scene).panes, script, out);
   });
   std::fprintf(stderr, "wrote %s\n", path.c_str());
   return 0;
 }
 
 const std::string kExportFooter =
-    "\nThe page holds the scene's one run (each video frame's poses) and its viewer (three.js): open it\n"
-    "from disk in any browser, offline; play, pause, scrub, step a frame, change the speed, and orbit\n"
-    "(drag), zoom (wheel) and pan (right drag) from the scene's camera.\n"
+    "\nThe page holds the scene's run (each video frame's poses, marks and equations) and its viewer\n"
+    "(three.js): open it from disk in any browser, offline; play, pause, scrub, step a frame, change the\n"
+    "speed, orbit (drag), zoom (wheel) and pan (right drag) from the scene's camera, click a body for its\n"
+    "numbers. A scene with [compare] shows its panes side by side, as its video does.\n"
     "With --format glb (or -o NAME.glb) it writes the run as glTF 2.0 instead, for Blender (File >\n"
     "Import > glTF 2.0), three.js and other 3D tools: a node and mesh per body in its colour, the rods,\n"
-    "the scene's camera, and an animation \"run\" of their poses at the video's frames.\n" +
+    "the scene's camera, and an animation \"run\" of their poses at the video's frames; with --marks\n"
+    "also the video's arrows (contact normals, impulses, friction, velocities) under a node \"marks\".\n" +
     examples_footer("  impulse export assets/scenes/bounce.toml                # out/bounce.html\n"
                     "  impulse export assets/scenes/s5_half_pipe.toml -o half_pipe.html\n"
                     "  impulse export scene.toml --set body[ball].restitution=0.5 -o bouncier.html\n"
-                    "  impulse export assets/scenes/ex5_newtons_cradle.toml --format glb   # out/ex5_newtons_cradle.glb\n");
+                    "  impulse export assets/scenes/ex5_newtons_cradle.toml --format glb   # out/ex5_newtons_cradle.glb\n"
+                    "  impulse export assets/scenes/bounce.toml --format glb --marks       # with the video's arrows\n");
 
 }  // namespace
 
@@ -61,6 +65,9 @@ void add_export_command(Commands& commands) {
   command->add_option("-o,--output", arguments->out_path, "The page (.html) or glTF file (.glb); default out/NAME.html or out/NAME.glb");
   command->add_option("--format", arguments->format, "html (the page) or glb (glTF 2.0 binary); default: glb where -o ends in .glb, else html")
       ->check(CLI::IsMember({"html", "glb"}));
+  command->add_flag("--marks", arguments->marks,
+                    "glb: also the video's arrows (contact normals, impulses, friction, velocities) under a node \"marks\"; "
+                    "the html page always has them");
   add_scene_options(command, arguments->scene);
 }
 
@@ -94,7 +101,7 @@ void add_preview_command(Commands& commands) {
                                          a.scene_path, a.port, script,
                                          [&a] {
                                            std::ostringstream run;
-                                           write_run_json(load(SceneFile(a.scene_path), a.scene, false), run);
+                                           write_run_json(load_panes(a.scene_path, a.scene).panes, run);
                                            return run.str();
                                          },
                                          [&a](const std::string& address) {

@@ -88,6 +88,13 @@ Comparison load_panes(const std::string& scene_path, const VideoOverrides& overr
   return loaded;
 }
 
+Comparison load_panes(const std::string& scene_path, const SceneArguments& arguments) {
+  VideoOverrides overrides;
+  overrides.scene_arguments = arguments;
+  demos::RenderOptions options;
+  return load_panes(scene_path, overrides, options);
+}
+
 demos::Scene load(const SceneFile& file, const SceneArguments& arguments, bool typeset) {
   demos::Scene scene = file.scene(arguments.settings);
   if (typeset) demos::check_equations(scene);

@@ -80,6 +80,8 @@ Comparison load_comparison(const std::vector<std::string>& scene_paths, const st
                            const VideoOverrides& overrides, demos::RenderOptions& options);
 // One scene file as it renders: its [compare]'s panes, or itself alone in one pane.
 Comparison load_panes(const std::string& scene_path, const VideoOverrides& overrides, demos::RenderOptions& options);
+// The same with the file's own video settings and `arguments` (--set) over it: a page's panes.
+Comparison load_panes(const std::string& scene_path, const SceneArguments& arguments);
 
 // The file's scene with the command line's arguments over it; what is odd but allowed is said on
 // stderr. With `typeset`, its [[equation]]s' TeX is typeset too (check_equations): a LaTeX error

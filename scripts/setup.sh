@@ -21,6 +21,7 @@ packages=(
   libtinyobjloader-dev                            # Wavefront OBJ files: a mesh shape's triangles (demos/scene/scene_mesh.cpp)
   libtinygltf-dev                                 # glTF 2.0 files: `impulse export --format glb` (demos/page/page_glb.cpp)
   libcpp-httplib-dev                              # impulse preview's server on 127.0.0.1 (demos/page/page_preview.cpp)
+  zlib1g-dev libglib2.0-dev                       # a page's run, gzip and base64 (demos/page/page_export.cpp)
   libegl-dev libegl-mesa0 libgl1-mesa-dri         # offscreen OpenGL through EGL (a GPU, else Mesa's llvmpipe)
   libosmesa6-dev                                  # ... or through OSMesa (llvmpipe; gone from Mesa 25.1)
   python3-glad                                    # the OpenGL loader, generated at build time

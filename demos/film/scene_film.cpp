@@ -21,6 +21,23 @@ SceneFilm::SceneFilm(const Scene& scene, int width, int height, const Shots& sho
   develop(width, height, take_.summary());
 }
 
+TakeSummary shared_summary(const std::vector<const TakeSummary*>& summaries) {
+  TakeSummary largest;
+  for (const TakeSummary* summary : summaries) {
+    largest.impact_times.insert(largest.impact_times.end(), summary->impact_times.begin(), summary->impact_times.end());
+    largest.largest_impulse = std::max(largest.largest_impulse, summary->largest_impulse);
+    largest.impulse_to_fit = std::max(largest.impulse_to_fit, summary->impulse_to_fit);
+    largest.largest_speed = std::max(largest.largest_speed, summary->largest_speed);
+    largest.someone_sleeps = largest.someone_sleeps || summary->someone_sleeps;
+    largest.moving_extent.extend(summary->moving_extent);  // the panes share one camera
+    largest.plot_maxima.resize(std::max(largest.plot_maxima.size(), summary->plot_maxima.size()), 0.0);
+    for (size_t k = 0; k < summary->plot_maxima.size(); ++k)
+      largest.plot_maxima[k] = std::max(largest.plot_maxima[k], summary->plot_maxima[k]);
+  }
+  std::sort(largest.impact_times.begin(), largest.impact_times.end());
+  return largest;
+}
+
 std::vector<std::unique_ptr<SceneFilm>> SceneFilm::together(const std::vector<const Scene*>& scenes, int width,
                                                             int height, const Shots& shots) {
   std::vector<std::unique_ptr<SceneFilm>> films;
@@ -28,19 +45,9 @@ std::vector<std::unique_ptr<SceneFilm>> SceneFilm::together(const std::vector<co
   for (const Scene* scene : scenes) shot.push_back(films.emplace_back(new SceneFilm(*scene)).get());
   if (shot.empty()) return films;
   shoot(shot, shots);
-  // One scale for the arrows and the plots of every film, so that their lengths compare.
-  TakeSummary largest;
-  for (const SceneFilm* film : shot) {
-    const TakeSummary& summary = film->take_.summary();
-    largest.largest_impulse = std::max(largest.largest_impulse, summary.largest_impulse);
-    largest.impulse_to_fit = std::max(largest.impulse_to_fit, summary.impulse_to_fit);
-    largest.largest_speed = std::max(largest.largest_speed, summary.largest_speed);
-    largest.someone_sleeps = largest.someone_sleeps || summary.someone_sleeps;
-    largest.moving_extent.extend(summary.moving_extent);  // the panes share one camera
-    largest.plot_maxima.resize(std::max(largest.plot_maxima.size(), summary.plot_maxima.size()), 0.0);
-    for (size_t k = 0; k < summary.plot_maxima.size(); ++k)
-      largest.plot_maxima[k] = std::max(largest.plot_maxima[k], summary.plot_maxima[k]);
-  }
+  std::vector<const TakeSummary*> summaries;
+  for (const SceneFilm* film : shot) summaries.push_back(&film->take_.summary());
+  const TakeSummary largest = shared_summary(summaries);
   for (SceneFilm* film : shot) {
     TakeSummary summary = film->take_.summary();
     summary.largest_impulse = largest.largest_impulse;

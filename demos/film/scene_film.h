@@ -41,6 +41,11 @@ struct ScenePicture {
   std::vector<BodyPose> poses;      // every body's, for a still
 };
 
+// What the films of a comparison share, so that their arrows' and plots' lengths compare: the
+// largest impulse, speed and plotted values of any, the extent every pane's bodies move through, and
+// every impact (in order).
+TakeSummary shared_summary(const std::vector<const TakeSummary*>& summaries);
+
 class SceneFilm {
  public:
   // Simulates the whole scene. `scene` must outlive the film.

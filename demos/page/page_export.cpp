@@ -1,5 +1,7 @@
 #include "demos/page/page_export.h"
 
+#include "demos/film/film.h"
+#include "demos/film/live_equations.h"
 #include "demos/film/marks.h"
 #include "demos/film/playback_timeline.h"
 #include "demos/film/render_types.h"
@@ -7,11 +9,17 @@
 #include "demos/film/world_take.h"
 #include "render/camera_view.h"
 
+#include <glib.h>
+#include <zlib.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -134,8 +142,8 @@ struct MarkedFrame {
 // (origin, direction, colour), dots (position, colour, radius in pixels, largest radius in m: 0 for
 // none) and lines (from, to, colour, width in pixels), colours as indices into a palette; and the
 // legend, each arrow entry with the metres its round value is long.
-void write_marks(const Scene& scene, const WorldTake& take, const std::vector<MarkedFrame>& frames, std::ostream& out) {
-  const ArrowScales scales = arrow_scales(scene, take.summary());
+void write_marks(const Scene& scene, const WorldTake& take, const ArrowScales& scales, const std::vector<MarkedFrame>& frames,
+                 std::ostream& out) {
   std::vector<physics::Body> bodies = take.bodies();
   std::vector<render::Colour> palette;
   auto colour = [&](std::string& to, const render::Colour& c) {
@@ -204,103 +212,221 @@ void write_marks(const Scene& scene, const WorldTake& take, const std::vector<Ma
   out << "]}";
 }
 
+// One pane's run as the page writes it, taken frame by frame as the video's frames sample it.
+struct PaneRecord {
+  const Scene* scene = nullptr;
+  std::string label;
+  std::unique_ptr<WorldTake> take;
+  std::string frames;  // per frame, the bodies whose pose changed: index, then x y z, w x y z (ChangeWriter)
+  std::string motion;  // per frame, the bodies whose velocity or spin changed: index, then v, ω
+  std::vector<MarkedFrame> marked;     // where the scene marks anything
+  std::vector<ImpactNumbers> impacts;  // each frame's latest impact, for the equations
+};
+
+// Whether the scene draws marks: contact points, normals, impulses, friction, velocities, rods.
+bool marks_anything(const Scene& scene, const WorldTake& take) {
+  const DrawOptions& draw = scene.draw;
+  return draw.contact_points || draw.contact_normals || draw.impulses || draw.friction || draw.velocities || !take.joints().empty();
+}
+
+// Every frame that starts before the duration ends, as the video's at real speed (1 s at 30 fps:
+// 30 frames, at 0 .. 29/30 s).
+long frame_count(const Scene& scene) { return std::max(1L, std::lround(std::ceil(scene.duration * scene.video.fps - 0.5))); }
+
+// Numbers of a body that change frame to frame, in whole units (1e-5 m ...), each written as its
+// change since the body's last written ones (the first time: from 0), and only where one changed.
+template <size_t N>
+class ChangeWriter {
+ public:
+  explicit ChangeWriter(size_t bodies) : last_(bodies), written_(bodies, false) {}
+  // Appends "i,d0,...,dN-1" (after a comma unless `first`) when body i's units changed.
+  void write(std::string& to, size_t i, const std::array<long long, N>& units, bool& first) {
+    if (written_[i] && units == last_[i]) return;
+    if (!first) to += ',';
+    first = false;
+    to += std::to_string(i);
+    for (size_t c = 0; c < N; ++c) {
+      to += ',';
+      to += std::to_string(units[c] - last_[i][c]);
+    }
+    last_[i] = units;
+    written_[i] = true;
+  }
+
+ private:
+  std::vector<std::array<long long, N>> last_;
+  std::vector<bool> written_;
+};
+
+long long units(double value, double per_unit) { return std::llround((std::isfinite(value) ? value : 0.0) * per_unit); }
+
+// Positions to 1e-5 m, orientations to 1e-6; velocities and spins to 1e-4 (m/s, rad/s: a resting
+// body's jitter below it costs nothing). A body at rest or asleep costs nothing.
+PaneRecord record(const Pane& pane) {
+  PaneRecord run{pane.scene, pane.label, std::make_unique<WorldTake>(*pane.scene), "", "", {}, {}};
+  const Scene& scene = *pane.scene;
+  WorldTake& take = *run.take;
+  const long frames = frame_count(scene);
+  const size_t bodies = take.bodies().size();
+  const bool marked = marks_anything(scene, take);
+  FrameSample sample;
+  ChangeWriter<7> poses(bodies);
+  ChangeWriter<6> motions(bodies);
+  for (long k = 0; k < frames; ++k) {
+    const double time = double(k) / scene.video.fps;
+    while (!take.finished() && take.time() < time - 1e-9) take.step();
+    take.sample(time, time, sample);
+    run.frames += k > 0 ? ",[" : "[";
+    bool first = true;
+    for (size_t i = 0; i < sample.poses.size(); ++i) {
+      const physics::Vec3& x = sample.poses[i].position;
+      const physics::Quat& q = sample.poses[i].orientation;
+      poses.write(run.frames, i, {units(x.x(), 1e5), units(x.y(), 1e5), units(x.z(), 1e5), units(q.w(), 1e6), units(q.x(), 1e6),
+                                  units(q.y(), 1e6), units(q.z(), 1e6)}, first);
+    }
+    run.frames += ']';
+    run.motion += k > 0 ? ",[" : "[";
+    first = true;
+    for (size_t i = 0; i < sample.velocities.size(); ++i) {
+      const physics::Vec3& v = sample.velocities[i];
+      const physics::Vec3& w = sample.angular_velocities[i];
+      motions.write(run.motion, i, {units(v.x(), 1e4), units(v.y(), 1e4), units(v.z(), 1e4), units(w.x(), 1e4), units(w.y(), 1e4),
+                                    units(w.z(), 1e4)}, first);
+    }
+    run.motion += ']';
+    if (marked) run.marked.push_back({sample.poses, sample.velocities, sample.contacts});
+    run.impacts.push_back(sample.impact);
+  }
+  return run;
+}
+
+// The typeset mathematics the panes show (each [[equation]], the [overlay] equation panel), as the
+// film typesets it: each distinct panel once (where, heading, its colour, which SVG, its size at
+// 720 lines), each SVG once.
+class PanelTable {
+ public:
+  // A pane's panels at each frame, as [index, opacity, ...]: "" when the scene shows none.
+  std::string frames(const PaneRecord& run) {
+    const Scene& scene = *run.scene;
+    if (scene.equations.empty() && scene.overlay.equation == "none") return "";
+    LiveEquations equations(scene, film_typesetter());
+    std::string written;
+    for (size_t k = 0; k < run.impacts.size(); ++k) {
+      render::Overlay overlay;
+      equations.add_panels(double(k) / scene.video.fps, run.impacts[k], overlay);
+      std::string shown;
+      for (const render::OverlayPanel& panel : overlay.panels) {
+        shown += shown.empty() ? "" : ",";
+        shown += std::to_string(index_of(panel));
+        fixed(shown, panel.opacity, 2);
+      }
+      written += k > 0 ? ",[" : "[";
+      written += shown;
+      written += ']';
+    }
+    return written;
+  }
+  bool empty() const { return entries_.empty(); }
+  void write(std::ostream& out) const {
+    out << ",\"panels\":[";
+    for (size_t k = 0; k < entries_.size(); ++k) out << (k > 0 ? "," : "") << entries_[k];
+    out << "],\"svgs\":[";
+    for (size_t k = 0; k < svgs_.size(); ++k) {
+      if (k > 0) out << ',';
+      text(out, *svgs_[k]);
+    }
+    out << ']';
+  }
+
+ private:
+  int index_of(const render::OverlayPanel& panel) {
+    const auto [svg, added] = svg_index_.emplace(panel.math.key, int(svgs_.size()));
+    if (added) svgs_.push_back(panel.math.svg ? panel.math.svg : std::make_shared<const std::string>());
+    static const char* const places[] = {"corner", "top-left", "top-right", "bottom-left", "bottom-right", "bottom"};
+    std::ostringstream entry;
+    entry << "{\"place\":\"" << places[int(panel.place)] << "\",\"lines\":[";
+    for (size_t k = 0; k < panel.lines.size(); ++k) {
+      if (k > 0) entry << ',';
+      text(entry, panel.lines[k]);
+    }
+    entry << "],\"colour\":";
+    vector(entry, physics::Vec3(panel.colour.r, panel.colour.g, panel.colour.b));
+    entry << ",\"svg\":" << svg->second << ",\"scale\":";
+    number(entry, panel.math.pixels_per_point);
+    entry << '}';
+    const auto [found, fresh] = entry_index_.emplace(entry.str(), int(entries_.size()));
+    if (fresh) entries_.push_back(entry.str());
+    return found->second;
+  }
+
+  std::vector<std::string> entries_;
+  std::map<std::string, int> entry_index_;
+  std::vector<std::shared_ptr<const std::string>> svgs_;
+  std::map<std::string, int> svg_index_;
+};
+
+// A pane's own part of the run: gravity, bodies, frames, motion, marks and equation panels.
+void write_pane(const PaneRecord& run, const ArrowScales& scales, const std::string& panel_frames, std::ostream& out) {
+  const Scene& scene = *run.scene;
+  const std::vector<physics::Body>& bodies = run.take->bodies();
+  out << "\"gravity\":";
+  vector(out, scene.world.gravity);
+  out << ",\"bodies\":[";
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    if (i > 0) out << ',';
+    body_json(out, bodies[i], scene.colours[i]);
+  }
+  out << "],\"frames\":[" << run.frames << "],\"motion\":[" << run.motion << ']';
+  if (marks_anything(scene, *run.take)) write_marks(scene, *run.take, scales, run.marked, out);
+  if (!panel_frames.empty()) out << ",\"panel_frames\":[" << panel_frames << ']';
+}
+
+void write_captions(std::ostream& out, const std::vector<CaptionCue>& captions, bool own, double duration) {
+  out << '[';
+  bool first = true;
+  for (const CaptionCue& caption : captions) {
+    if (caption.own != own || (!own && caption.pane > 1)) continue;  // a file's own values: its first pane's
+    out << (first ? "" : ",") << "{\"text\":";
+    text(out, caption.text);
+    out << ",\"start\":";
+    number(out, caption.start);
+    out << ",\"end\":";
+    number(out, std::min(caption.end, duration));
+    out << '}';
+    first = false;
+  }
+  out << ']';
+}
+
 }  // namespace
 
 void write_json_string(std::ostream& out, const std::string& value) { text(out, value); }
 
-void write_run_json(const Scene& scene, std::ostream& out) {
-  WorldTake take(scene);
+void write_run_json(const std::vector<Pane>& panes, std::ostream& out) {
+  if (panes.empty()) throw std::invalid_argument("a page shows one to four scenes");
+  std::vector<PaneRecord> runs;
+  for (const Pane& pane : panes) runs.push_back(record(pane));
+  const Scene& scene = *panes.front().scene;  // the first sets the clock, the camera and the captions
   const int fps = scene.video.fps;
-  // Every frame that starts before the duration ends, as the video's at real speed (1 s at 30 fps:
-  // 30 frames, at 0 .. 29/30 s).
-  const long frames = std::max(1L, std::lround(std::ceil(scene.duration * fps - 0.5)));
+  const long frames = frame_count(scene);
+  std::vector<const TakeSummary*> summaries;
+  for (const PaneRecord& run : runs) summaries.push_back(&run.take->summary());
+  const TakeSummary shared = shared_summary(summaries);
   out << "{\"title\":";
   text(out, scene.title);
   out << ",\"fps\":" << fps << ",\"duration\":";
   number(out, scene.duration);
-  out << ",\"gravity\":";
-  vector(out, scene.world.gravity);
   out << ",\"camera\":{\"position\":";
   vector(out, scene.camera.position.cast<double>());
   out << ",\"target\":";
   vector(out, scene.camera.target.cast<double>());
   out << ",\"fov_y_degrees\":";
   number(out, scene.camera.fov_y_degrees);
-  out << "},\"captions\":[";
-  bool first_caption = true;
-  for (const CaptionCue& caption : scene.captions) {
-    if (caption.pane > 1) continue;  // the first pane's, as the page plays the file's own values
-    out << (first_caption ? "" : ",") << "{\"text\":";
-    text(out, caption.text);
-    out << ",\"start\":";
-    number(out, caption.start);
-    out << ",\"end\":";
-    number(out, std::min(caption.end, scene.duration));
-    out << '}';
-    first_caption = false;
-  }
-  out << "],\"bodies\":[";
-  const std::vector<physics::Body>& bodies = take.bodies();
-  for (size_t i = 0; i < bodies.size(); ++i) {
-    if (i > 0) out << ',';
-    body_json(out, bodies[i], scene.colours[i]);
-  }
-  // Frames: per frame, the bodies whose written pose differs from the frame before (all of them in
-  // the first), each as its index and x y z, w x y z: a body at rest or asleep costs nothing.
-  // Positions to 1e-5 m, orientations to 1e-6.
-  out << "],\"frames\":[";
-  FrameSample sample;
-  std::vector<std::string> last(bodies.size()), last_motion(bodies.size());
-  // Per frame, the bodies whose velocity or spin (after the last step taken) changed: index, then
-  // vx vy vz, wx wy wz to 1e-4 (m/s, rad/s: a resting body's jitter below it costs nothing).
-  // Written after the frames.
-  std::string motion;
-  const DrawOptions& draw = scene.draw;
-  const bool marked = draw.contact_points || draw.contact_normals || draw.impulses || draw.friction || draw.velocities || !take.joints().empty();
-  std::vector<MarkedFrame> marked_frames;
-  for (long k = 0; k < frames; ++k) {
-    const double time = double(k) / fps;
-    while (!take.finished() && take.time() < time - 1e-9) take.step();
-    take.sample(time, time, sample);
-    out << (k > 0 ? ",[" : "[");
-    bool first = true;
-    for (size_t i = 0; i < sample.poses.size(); ++i) {
-      const BodyPose& pose = sample.poses[i];
-      const physics::Quat& q = pose.orientation;
-      std::string written;
-      fixed(written, pose.position.x(), 5);
-      fixed(written, pose.position.y(), 5);
-      fixed(written, pose.position.z(), 5);
-      fixed(written, q.w(), 6);
-      fixed(written, q.x(), 6);
-      fixed(written, q.y(), 6);
-      fixed(written, q.z(), 6);
-      if (written == last[i]) continue;
-      out << (first ? "" : ",") << i << written;
-      first = false;
-      last[i] = std::move(written);
-    }
-    out << ']';
-    motion += k > 0 ? ",[" : "[";
-    bool first_motion = true;
-    for (size_t i = 0; i < sample.velocities.size(); ++i) {
-      std::string written;
-      for (const physics::Vec3* v : {&sample.velocities[i], &sample.angular_velocities[i]})
-        for (int c = 0; c < 3; ++c) fixed(written, (*v)[c], 4);
-      if (written == last_motion[i]) continue;
-      if (!first_motion) motion += ',';
-      motion += std::to_string(i);
-      motion += written;
-      first_motion = false;
-      last_motion[i] = std::move(written);
-    }
-    motion += ']';
-    if (marked) marked_frames.push_back({sample.poses, sample.velocities, sample.contacts});
-  }
-  out << "],\"motion\":[" << motion << ']';
-  // The video's playback: simulated s per second of video at each frame (slower around impacts),
-  // and the speed outside them.
-  const PlaybackTimeline timeline(scene.playback, take.summary().impact_times, scene.duration, fps);
+  out << "},\"captions\":";
+  write_captions(out, scene.captions, false, scene.duration);
+  // The video's playback: simulated s per second of video at each frame (slower around an impact
+  // of any pane), and the speed outside them.
+  const PlaybackTimeline timeline(scene.playback, shared.impact_times, scene.duration, fps);
   out << ",\"playback_speed\":";
   number(out, scene.playback.speed);
   out << ",\"speeds\":[";
@@ -309,49 +435,103 @@ void write_run_json(const Scene& scene, std::ostream& out) {
     number(out, timeline.speed_at(double(k) / fps));
   }
   out << ']';
-  if (marked) write_marks(scene, take, marked_frames, out);
+  PanelTable panels;
+  std::vector<std::string> panel_frames;
+  for (const PaneRecord& run : runs) panel_frames.push_back(panels.frames(run));
+  if (!panels.empty()) panels.write(out);
+  if (runs.size() == 1) {
+    out << ',';
+    write_pane(runs.front(), arrow_scales(scene, shared), panel_frames.front(), out);
+  } else {
+    // Each pane's own bodies and run, with the label naming what sets it apart, in its colour.
+    out << ",\"panes\":[";
+    for (size_t p = 0; p < runs.size(); ++p) {
+      out << (p > 0 ? ",{" : "{") << "\"label\":";
+      text(out, runs[p].label);
+      out << ",\"colour\":";
+      const render::Colour colour = pane_colour(int(p));
+      vector(out, physics::Vec3(colour.r, colour.g, colour.b));
+      out << ",\"captions\":";
+      write_captions(out, runs[p].scene->captions, true, scene.duration);
+      out << ',';
+      write_pane(runs[p], arrow_scales(*runs[p].scene, shared), panel_frames[p], out);
+      out << '}';
+    }
+    out << ']';
+  }
   out << '}';
 }
 
+void write_run_json(const Scene& scene, std::ostream& out) { write_run_json({Pane{&scene, ""}}, out); }
+
 namespace {
 
-// The page around the run: `run` writes the run's JSON, `live` the live block (or nothing); a live
-// page may fetch from where it came.
-template <class Run>
-void write_html(const std::string& script, std::ostream& out, bool live, const Run& run, const std::string& state_json) {
+// `bytes` gzipped (zlib's default level), then in base64: a page's run, which the page unpacks with
+// the browser's DecompressionStream.
+std::string gzip_base64(const std::string& bytes) {
+  z_stream stream{};
+  if (deflateInit2(&stream, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)  // 16: gzip's header
+    throw std::runtime_error("zlib cannot start");
+  std::string packed(deflateBound(&stream, uLong(bytes.size())), '\0');
+  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+  stream.avail_in = uInt(bytes.size());
+  stream.next_out = reinterpret_cast<Bytef*>(packed.data());
+  stream.avail_out = uInt(packed.size());
+  const int done = deflate(&stream, Z_FINISH);
+  packed.resize(stream.total_out);
+  deflateEnd(&stream);
+  if (done != Z_STREAM_END) throw std::runtime_error("zlib cannot pack the page's run");
+  const std::unique_ptr<gchar, decltype(&g_free)> text(g_base64_encode(reinterpret_cast<const guchar*>(packed.data()), packed.size()), g_free);
+  return text.get();
+}
+
+// The page around the run (its JSON), `live` the live block (or nothing); a live page may fetch
+// from where it came.
+void write_html(const std::string& script, std::ostream& out, bool live, const std::string& run_json, const std::string& state_json) {
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-         "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'"
+         "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; img-src data:"
       << (live ? "; connect-src 'self'" : "")
       << "\">\n"
          "<title>impulse page</title>\n<style>\n"
          "html, body { margin: 0; height: 100%; font-family: 'DejaVu Sans', sans-serif; background: #eaedf4; }\n"
          "#view { position: absolute; inset: 0 0 56px 0; }\n#view canvas { width: 100%; height: 100%; display: block; }\n"
+         "#overlay, .pane { position: absolute; inset: 0; pointer-events: none; }\n"
+         ".corner { position: absolute; display: flex; flex-direction: column; gap: 8px; }\n"
+         ".top-left { top: 64px; left: 16px; align-items: flex-start; } .top-right { top: 12px; right: 16px; align-items: flex-end; }\n"
+         ".bottom-left { bottom: 16px; left: 16px; align-items: flex-start; } .bottom-right { bottom: 16px; right: 16px; align-items: flex-end; }\n"
+         ".bottom { bottom: 16px; left: 50%; transform: translateX(-50%); align-items: center; width: 80%; }\n"
+         ".pane .top-left { top: 8px; left: 8px; } .pane .top-right { top: 8px; right: 8px; } .pane .bottom-left { bottom: 40px; left: 8px; }\n"
+         ".pane .bottom-right { bottom: 8px; right: 8px; } .pane .bottom { bottom: 8px; }\n"
+         ".equation { padding: 6px 10px; border-radius: 8px; background: rgba(255, 255, 255, 0.92); font-size: 14px; }\n"
+         ".equation img { display: block; margin-top: 2px; }\n"
+         ".label { position: absolute; left: 8px; bottom: 8px; padding: 3px 10px; border: 2px solid; border-radius: 6px; background: rgba(255, 255, 255, 0.9); font-size: 15px; }\n"
          "#bar { position: absolute; left: 0; right: 0; bottom: 0; height: 56px; display: flex; gap: 10px; align-items: center; padding: 0 14px; background: #fff; }\n"
          "#time { flex: 1; }\n#clock { font-family: 'DejaVu Sans Mono', monospace; min-width: 7em; }\n"
          "h1 { position: absolute; top: 12px; left: 16px; margin: 0; padding: 8px 12px; font-size: 20px; background: #fff; border-radius: 8px; }\n"
-         "#caption { position: absolute; left: 50%; bottom: 76px; transform: translateX(-50%); max-width: 80%; padding: 8px 16px; border-radius: 8px; background: rgba(40, 42, 48, 0.85); color: #fff; font-size: 18px; text-align: center; }\n"
-         "#caption:empty { display: none; }\n"
+         "#caption, .caption { max-width: 100%; padding: 8px 16px; border-radius: 8px; background: rgba(40, 42, 48, 0.85); color: #fff; font-size: 18px; text-align: center; }\n"
+         ".caption { font-size: 15px; padding: 5px 12px; }\n"
+         "#caption:empty, .caption:empty { display: none; }\n"
          "pre#probe, pre#errors { position: absolute; left: -9999px; }\n"
          "#problem { position: absolute; top: 64px; left: 16px; right: 16px; margin: 0; padding: 10px 14px; border-radius: 8px; background: #fff0f0; color: #8a1010; border: 2px solid #d04040; font: 15px 'DejaVu Sans Mono', monospace; white-space: pre-wrap; }\n"
          "#problem:empty { display: none; }\n"
-         "#panel { position: absolute; top: 64px; right: 16px; padding: 8px 14px 10px; border-radius: 8px; background: rgba(255, 255, 255, 0.94); font-size: 14px; box-shadow: 0 1px 6px rgba(0, 0, 0, 0.2); }\n"
+         "#panel { padding: 8px 14px 10px; border-radius: 8px; background: rgba(255, 255, 255, 0.94); font-size: 14px; box-shadow: 0 1px 6px rgba(0, 0, 0, 0.2); }\n"
          "#panel h2 { margin: 0 0 6px; font-size: 16px; } #panel td { padding: 1px 8px 1px 0; white-space: nowrap; } #panel td:nth-child(2) { font-family: 'DejaVu Sans Mono', monospace; font-size: 13px; }\n"
          "#panel p { margin: 6px 0 0; font-size: 12px; color: #555; max-width: 300px; }\n"
-         "#legend { position: absolute; left: 16px; bottom: 72px; padding: 6px 10px; border-radius: 8px; background: rgba(255, 255, 255, 0.9); font-size: 13px; line-height: 18px; }\n"
+         "#legend { padding: 6px 10px; border-radius: 8px; background: rgba(255, 255, 255, 0.9); font-size: 13px; line-height: 18px; }\n"
          "#legend svg { vertical-align: middle; }\n"
-         "body.bare #legend { display: none; }\n"
-         "body.bare #view { inset: auto; left: 0; top: 0; } body.bare #bar, body.bare h1, body.bare #caption { display: none; }\n</style></head><body>\n"
-         "<div id=\"view\"></div>\n<h1 id=\"title\"></h1>\n<div id=\"caption\"></div>\n"
+         "[hidden] { display: none !important; }\n"
+         "body.bare #legend, body.bare #caption, body.bare .caption, body.bare .label { display: none; }\n"
+         "body.bare #view { inset: auto; left: 0; top: 0; } body.bare #bar, body.bare h1 { display: none; }\n</style></head><body>\n"
+         "<div id=\"view\"><div id=\"overlay\"></div></div>\n<h1 id=\"title\"></h1>\n<div id=\"caption\"></div>\n"
          "<div id=\"bar\"><button id=\"play\">Play</button><button id=\"back\" title=\"one frame back\">&#9664;</button>"
          "<button id=\"forward\" title=\"one frame on\">&#9654;</button>"
          "<input id=\"time\" type=\"range\" min=\"0\" max=\"0\" step=\"1\" value=\"0\" aria-label=\"time\">"
          "<span id=\"clock\">t = 0.00 s</span><label>speed <select id=\"speed\"><option value=\"0.25\">\u00bc\u00d7</option>"
          "<option value=\"0.5\">\u00bd\u00d7</option><option value=\"1\" selected>1\u00d7</option><option value=\"2\">2\u00d7</option></select></label></div>\n"
          "<div id=\"legend\" hidden></div><div id=\"panel\" hidden></div><pre id=\"problem\"></pre><pre id=\"probe\"></pre><pre id=\"errors\"></pre>\n"
-         "<script id=\"impulse-run\" type=\"application/json\">";
-  run(out);
-  out << "</script>\n";
+         "<script id=\"impulse-run\" type=\"application/gzip;base64\">"
+      << gzip_base64(run_json) << "</script>\n";
   if (live) out << "<script id=\"impulse-live\" type=\"application/json\">" << state_json << "</script>\n";
   out << "<script>\n";
   // The bundle's own text may not close its element either ("</script" only in its strings).
@@ -367,12 +547,16 @@ void write_html(const std::string& script, std::ostream& out, bool live, const R
 
 }  // namespace
 
-void write_page(const Scene& scene, const std::string& script, std::ostream& out) {
-  write_html(script, out, false, [&](std::ostream& to) { write_run_json(scene, to); }, "");
+void write_page(const std::vector<Pane>& panes, const std::string& script, std::ostream& out) {
+  std::ostringstream run;
+  write_run_json(panes, run);
+  write_html(script, out, false, run.str(), "");
 }
 
+void write_page(const Scene& scene, const std::string& script, std::ostream& out) { write_page({Pane{&scene, ""}}, script, out); }
+
 void write_live_page(const std::string& run_json, const std::string& state_json, const std::string& script, std::ostream& out) {
-  write_html(script, out, true, [&](std::ostream& to) { to << run_json; }, state_json);
+  write_html(script, out, true, run_json, state_json);
 }
 
 std::string page_path(const std::string& video_path) {

@@ -2,6 +2,7 @@
 // (WorldTake), each video frame's poses written as JSON into one HTML file that holds the viewer
 // (web/: three.js, bundled at build time) and fetches nothing.
 #pragma once
+#include "demos/film/film.h"
 #include "demos/scene/scene.h"
 
 #include <ostream>
@@ -17,11 +18,18 @@ void write_json_string(std::ostream& out, const std::string& value);
 // bodies whose pose changed since the frame before, each as its index then x y z, w x y z; and
 // likewise their velocity and spin after the frame's last step, index then vx vy vz, wx wy wz; and
 // what the video marks on each frame (contact points, normals, impulses, velocities, rods), with
-// its legend, where the scene draws any; and the video's playback speed at each frame.
+// its legend, where the scene draws any; the typeset equations shown at each frame (each SVG once,
+// each panel once, per frame which and how opaque); and the video's playback speed at each frame.
 void write_run_json(const Scene& scene, std::ostream& out);
+// A comparison's (two to four panes, film.h): the first scene's title, clock, camera and captions,
+// the playback slowed around an impact of any pane, one arrow scale for all; under "panes" each
+// pane's label, colour, own captions, and its gravity, bodies, frames, motion, marks and equations
+// as above. One pane: as the scene's own.
+void write_run_json(const std::vector<Pane>& panes, std::ostream& out);
 
 // The whole page: `script` is the viewer's bundle (page_script()).
 void write_page(const Scene& scene, const std::string& script, std::ostream& out);
+void write_page(const std::vector<Pane>& panes, const std::string& script, std::ostream& out);
 
 // The page `impulse preview` serves: `run_json` (write_run_json's) and the viewer as above, and
 // `state_json` ({"version":N,"error":...}, the server's /state when the page was made). The page

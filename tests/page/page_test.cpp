@@ -2,6 +2,7 @@
 // page draws each body where the trace of the same run puts it and each mark where the video's film
 // does, fetches nothing, and reports no error.
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,7 @@
 
 #include "demos/film/marks.h"
 #include "demos/film/scene_film.h"
+#include "demos/scene/scene_compare.h"
 #include "demos/scene/scene_file.h"
 #include "render/camera_view.h"
 #include "tests/support/child_process.h"
@@ -34,13 +36,11 @@ std::string contents(const fs::path& path) {
 using testing::Pose;
 using testing::Poses;
 
-// What the page drew: its probe's POSE lines (t x y z qw qx qy qz name), and its errors.
-struct Drawn {
+// What the page drew in a pane: its probe's POSE lines (t x y z qw qx qy qz name), where each
+// centre falls in the pane, and the marks.
+struct PaneDrawn {
   Poses poses;
   std::map<std::pair<std::string, long>, std::pair<double, double>> pixels;  // where each centre falls
-  int width = 0, height = 0;  // the view's
-  std::string errors;
-  bool gl = false;
   // The marks as drawn, by moment (ms): arrows (origin, vector), lines (ends), dots (place); each
   // with its colour as "#rrggbb" (sRGB).
   struct Mark {
@@ -49,6 +49,22 @@ struct Drawn {
   };
   std::map<long, std::vector<Mark>> arrows, lines, dots;
 };
+// A typeset equation the page shows: where (a corner of pane `pane`, from 1; 0: of the whole view),
+// and the FNV-1a hash of its SVG.
+struct Equation {
+  std::string place;
+  int pane = 0;
+  uint32_t hash = 0;
+};
+// What the page drew: each pane's, the equations by moment (ms), its errors.
+struct Drawn {
+  std::vector<PaneDrawn> panes;
+  std::map<long, std::vector<Equation>> equations;
+  int width = 0, height = 0;  // a pane's
+  std::string errors;
+  bool gl = false;
+};
+using Mark = PaneDrawn::Mark;
 Drawn opened(const fs::path& page, const fs::path& dir, const std::string& moments) {
   const testing::ChildResult browser = testing::run_child(
       {"/bin/sh", "-c",
@@ -68,6 +84,8 @@ Drawn opened(const fs::path& page, const fs::path& dir, const std::string& momen
   drawn.errors = between("<pre id=\"errors\">");
   std::istringstream probe(between("<pre id=\"probe\">"));
   std::string line;
+  size_t pane = 0;
+  drawn.panes.resize(1);
   while (std::getline(probe, line)) {
     std::istringstream words(line);
     std::string kind;
@@ -76,12 +94,10 @@ Drawn opened(const fs::path& page, const fs::path& dir, const std::string& momen
       words >> drawn.width >> drawn.height;
       continue;
     }
-    if (kind == "PIXEL") {
-      double t, x, y;
-      words >> t >> x >> y;
-      std::string name;
-      std::getline(words >> std::ws, name);
-      drawn.pixels[{name, std::lround(t * 1000)}] = {x, y};
+    if (kind == "PANE") {
+      words >> pane;
+      pane -= 1;
+      if (drawn.panes.size() <= pane) drawn.panes.resize(pane + 1);
       continue;
     }
     if (kind == "GL") {
@@ -90,26 +106,46 @@ Drawn opened(const fs::path& page, const fs::path& dir, const std::string& momen
       drawn.gl = yes == "yes";
       continue;
     }
+    double t;
+    words >> t;
+    const long ms = std::lround(t * 1000);
+    if (kind == "EQUATION") {
+      Equation equation;
+      words >> equation.place >> equation.pane >> equation.hash;
+      drawn.equations[ms].push_back(equation);
+      continue;
+    }
+    PaneDrawn& in = drawn.panes[pane];
+    if (kind == "PIXEL") {
+      double x, y;
+      words >> x >> y;
+      std::string name;
+      std::getline(words >> std::ws, name);
+      in.pixels[{name, ms}] = {x, y};
+      continue;
+    }
     if (kind == "ARROW" || kind == "LINE" || kind == "DOT") {
-      double t;
-      words >> t;
-      Drawn::Mark mark;
+      Mark mark;
       mark.numbers.resize(kind == "DOT" ? 3 : 6);
       for (double& v : mark.numbers) words >> v;
       words >> mark.colour;
-      (kind == "ARROW" ? drawn.arrows : kind == "LINE" ? drawn.lines : drawn.dots)[std::lround(t * 1000)].push_back(mark);
+      (kind == "ARROW" ? in.arrows : kind == "LINE" ? in.lines : in.dots)[ms].push_back(mark);
       continue;
     }
     if (kind != "POSE") continue;
-    double t;
     Pose pose(7);
-    words >> t;
     for (double& v : pose) words >> v;
     std::string name;
     std::getline(words >> std::ws, name);
-    drawn.poses[{name, std::lround(t * 1000)}] = pose;
+    in.poses[{name, ms}] = pose;
   }
   return drawn;
+}
+
+uint32_t fnv1a(const std::string& text) {
+  uint32_t hash = 0x811c9dc5u;
+  for (const unsigned char c : text) hash = (hash ^ c) * 0x01000193u;
+  return hash;
 }
 
 // "#rrggbb" of a colour of the renderer (sRGB 0..1), as the page writes a material's.
@@ -124,18 +160,18 @@ bool same_colour(const std::string& a, const std::string& b) {
   return true;
 }
 // Whether `drawn` holds a mark within 1e-3 m of `numbers` in `colour` (a line either way round).
-bool holds(const std::vector<Drawn::Mark>& drawn, const std::vector<double>& numbers, const std::string& colour, bool either_way = false) {
-  auto near = [&](const Drawn::Mark& mark, bool swapped) {
+bool holds(const std::vector<Mark>& drawn, const std::vector<double>& numbers, const std::string& colour, bool either_way = false) {
+  auto near = [&](const Mark& mark, bool swapped) {
     for (size_t k = 0; k < numbers.size(); ++k) {
       const size_t at = swapped ? (k + 3) % 6 : k;
       if (std::abs(mark.numbers[at] - numbers[k]) > 1e-3) return false;
     }
     return same_colour(mark.colour, colour);
   };
-  return std::any_of(drawn.begin(), drawn.end(), [&](const Drawn::Mark& mark) { return near(mark, false) || (either_way && near(mark, true)); });
+  return std::any_of(drawn.begin(), drawn.end(), [&](const Mark& mark) { return near(mark, false) || (either_way && near(mark, true)); });
 }
-const std::vector<Drawn::Mark>& at(const std::map<long, std::vector<Drawn::Mark>>& marks, long ms) {
-  static const std::vector<Drawn::Mark> none;
+const std::vector<Mark>& at(const std::map<long, std::vector<Mark>>& marks, long ms) {
+  static const std::vector<Mark> none;
   const auto found = marks.find(ms);
   return found == marks.end() ? none : found->second;
 }
@@ -143,98 +179,142 @@ std::vector<double> numbers_of(const render::Vec3f& a, const render::Vec3f& b) {
 
 class EveryScene : public ::testing::TestWithParam<std::string> {};
 
-// Each catalogue scene's page, opened from disk at 854 x 480: at a third and two thirds of the
-// scene, every body where the trace of the same run puts it (its centre within 1e-4 m, its
-// orientation within 1e-4, either sign of the quaternion), and where the video's camera shows it
-// (its centre within 2 px of the renderer's projection of the traced centre); no error; WebGL;
-// nothing fetched; under 2 MB (the 1001-body heap: 25 MB). And the marks the video's film draws at
-// those moments (rods, ropes, velocity arrows; at real speed also contact dots and arrows), each
-// where the film puts it within 1e-3 m, in its colour.
+// Each catalogue scene's page, opened from disk with each pane 854 x 480 (a comparison's panes, as
+// its video shows them): at a third and two thirds of the scene, every body of every pane where the
+// trace of the same run puts it (its centre within 1e-4 m, its orientation within 1e-4, either sign
+// of the quaternion), and where the video's camera shows it (its centre within 2 px of the
+// renderer's projection of the traced centre); no error; WebGL; nothing fetched; under 2 MB (the
+// 1001-body heap: 25 MB; the two 231-box pyramids of ex3_stacks, one falling all the while: 4 MB).
+// And what the video's film shows at those moments: the marks (rods, ropes, velocity arrows; at
+// real speed also contact dots and arrows), each where the film puts it within 1e-3 m, in its
+// colour; and each typeset equation, the same SVG in the same corner of the same pane.
 TEST_P(EveryScene, ThePageDrawsEachBodyWhereTheTraceAndTheVideosCameraPutIt) {
   const std::string name = GetParam();
   const fs::path dir = testing::scratch("page_test", name);
-  const fs::path page = dir / "page.html", trace = dir / "trace.csv";
+  const fs::path page = dir / "page.html";
   const std::string source = std::string(IMPULSE_SOURCE_DIR) + "/assets/scenes/" + name + ".toml";
-  const demos::Scene scene = demos::load_scene(source);
+  const demos::SceneFile file(source);
+  const demos::Scene scene = file.scene({});
+  // The panes: the [compare]'s values, each the file with KEY=VALUE set; or the scene alone.
+  std::vector<demos::Scene> panes = {scene};
+  std::vector<std::string> settings = {""};
+  if (!scene.compare.values.empty()) {
+    panes = demos::load_variants(file, {}, scene.compare);
+    settings.clear();
+    for (const std::string& value : scene.compare.values) settings.push_back(scene.compare.key + "=" + value);
+  }
   const testing::ChildResult exported = testing::run_child({IMPULSE_PROGRAM, "-q", "export", source, "-o", page.string()});
   ASSERT_TRUE(exported.succeeded()) << exported.describe();
-  const testing::ChildResult simulated = testing::run_child({IMPULSE_PROGRAM, "-q", "simulate", source, "--trace", trace.string()});
-  ASSERT_TRUE(simulated.succeeded()) << simulated.describe();
 
   const std::string html = contents(page);
-  EXPECT_LT(html.size(), name == "ex2_many_bodies" ? 25u << 20 : 2u << 20) << "bytes";
+  EXPECT_LT(html.size(), name == "ex2_many_bodies" ? 25u << 20 : name == "ex3_stacks" ? 4u << 20 : 2u << 20) << "bytes";
   for (const char* fetch : {"<script src", "<link", "<img", "import("})
     EXPECT_EQ(html.find(fetch), std::string::npos) << "the page fetches nothing: " << fetch;
-  // and may not: its policy allows no source but its own inline script and style (the preview's
-  // polling, in the same script, is refused here).
-  EXPECT_NE(html.find("content=\"default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'\">"), std::string::npos);
+  // and may not: its policy allows no source but its own inline script and style, and images it
+  // makes itself (the equations' SVGs); the preview's polling, in the same script, is refused here.
+  EXPECT_NE(html.find("content=\"default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; img-src data:\">"),
+            std::string::npos);
 
   // Frames that are also steps: a third and two thirds of the way, to the frame.
   const int fps = scene.video.fps;
   std::vector<long> moments_ms;
   std::ostringstream moments;
+  demos::Shots shots;
+  shots.video_frames = false;
   for (const int share : {1, 2}) {
     const long frame = std::lround(scene.duration * share / 3 * fps);
     moments_ms.push_back(std::lround(1000.0 * frame / fps));
     moments << (share > 1 ? "," : "") << double(frame) / fps;
+    shots.stills.push_back(double(frame) / fps);  // the frames' own
   }
   const Drawn drawn = opened(page, dir, moments.str());
   EXPECT_TRUE(drawn.gl) << "WebGL";
   EXPECT_EQ(drawn.errors, "");
   ASSERT_EQ(drawn.width, 854);
   ASSERT_EQ(drawn.height, 480);
-  const Poses expected = testing::traced_poses(trace, moments_ms);
-  const render::CameraView view = render::make_camera_view({scene.camera.position, scene.camera.target, scene.camera.fov_y_degrees}, 854, 480);
-  int compared = 0;
-  for (const auto& [key, pose] : expected) {
-    const auto found = drawn.poses.find(key);
-    if (found == drawn.poses.end()) continue;  // a plane: drawn, not posed
-    ++compared;
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(found->second[k], pose[k], 1e-4) << key.first << " at " << key.second << " ms";
-    double dot = 0;
-    for (int k = 3; k < 7; ++k) dot += found->second[k] * pose[k];
-    EXPECT_NEAR(std::abs(dot), 1, 1e-4) << key.first << " at " << key.second << " ms: its orientation";
-    const auto pixel = view.to_pixels(Eigen::Vector3f(float(pose[0]), float(pose[1]), float(pose[2])));
-    const auto seen = drawn.pixels.find(key);
-    if (!pixel || seen == drawn.pixels.end()) continue;  // behind the camera
-    EXPECT_NEAR(seen->second.first, pixel->x(), 2) << key.first << " at " << key.second << " ms: pixels across";
-    EXPECT_NEAR(seen->second.second, pixel->y(), 2) << key.first << " at " << key.second << " ms: pixels down";
-  }
-  EXPECT_GE(compared, 1) << "bodies compared: the moments are no steps of the trace";
+  ASSERT_EQ(drawn.panes.size(), panes.size());
 
-  // The marks, as the video's film draws them at the same moments (its stills): its rods and ropes
-  // and velocity arrows; and where the video has no slow motion (which holds contacts on screen by
-  // the slowed clock), every arrow and dot too.
-  demos::Shots shots;
-  shots.video_frames = false;
-  for (const int share : {1, 2}) shots.stills.push_back(double(std::lround(scene.duration * share / 3 * fps)) / fps);  // the frames' own
-  demos::SceneFilm film(scene, 854, 480, shots);
+  // The films of the panes, as the video makes them (one arrow scale for all).
+  std::vector<const demos::Scene*> scenes;
+  for (const demos::Scene& pane : panes) scenes.push_back(&pane);
+  const auto films = demos::SceneFilm::together(scenes, 854, 480, shots);
   const bool real_speed = !(scene.playback.slow_motion_impulse > 0);
-  for (int k = 0; k < film.picture_count(); ++k) {
-    demos::ScenePicture picture;
-    film.next(picture);
-    const long ms = std::lround(picture.time * 1000);
-    const render::DrawList& list = picture.draw_list;
-    for (const render::LineItem& line : list.lines)
-      EXPECT_TRUE(holds(at(drawn.lines, ms), numbers_of(line.from, line.to), hex(line.colour), true)) << "a line at " << ms << " ms";
-    EXPECT_EQ(at(drawn.lines, ms).size(), list.lines.size()) << "lines at " << ms << " ms";
-    int arrows = 0;
-    for (const render::ArrowItem& arrow : list.arrows) {
-      if (!real_speed && hex(arrow.colour) != hex(demos::mark_colour::velocity)) continue;
-      if (arrow.direction.norm() < 1e-6) continue;  // drawn as nothing
-      ++arrows;
-      EXPECT_TRUE(holds(at(drawn.arrows, ms), numbers_of(arrow.origin, arrow.direction), hex(arrow.colour)))
-          << "an arrow at " << ms << " ms from " << arrow.origin.transpose() << " along " << arrow.direction.transpose();
+  const render::CameraView view = render::make_camera_view({scene.camera.position, scene.camera.target, scene.camera.fov_y_degrees}, 854, 480);
+  static const char* const places[] = {"corner", "top-left", "top-right", "bottom-left", "bottom-right", "bottom"};
+  std::map<long, size_t> equations_seen;
+  for (size_t p = 0; p < panes.size(); ++p) {
+    SCOPED_TRACE("pane " + std::to_string(p + 1) + " " + settings[p]);
+    const PaneDrawn& in = drawn.panes[p];
+    const fs::path trace = dir / ("trace_" + std::to_string(p + 1) + ".csv");
+    std::vector<std::string> simulate = {IMPULSE_PROGRAM, "-q", "simulate", source, "--trace", trace.string()};
+    if (!settings[p].empty()) simulate.insert(simulate.end(), {"--set", settings[p]});
+    const testing::ChildResult simulated = testing::run_child(simulate);
+    ASSERT_TRUE(simulated.succeeded()) << simulated.describe();
+    const Poses expected = testing::traced_poses(trace, moments_ms);
+    int compared = 0;
+    for (const auto& [key, pose] : expected) {
+      const auto found = in.poses.find(key);
+      if (found == in.poses.end()) continue;  // a plane: drawn, not posed
+      ++compared;
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(found->second[k], pose[k], 1e-4) << key.first << " at " << key.second << " ms";
+      double dot = 0;
+      for (int k = 3; k < 7; ++k) dot += found->second[k] * pose[k];
+      EXPECT_NEAR(std::abs(dot), 1, 1e-4) << key.first << " at " << key.second << " ms: its orientation";
+      const auto pixel = view.to_pixels(Eigen::Vector3f(float(pose[0]), float(pose[1]), float(pose[2])));
+      const auto seen = in.pixels.find(key);
+      if (!pixel || seen == in.pixels.end()) continue;  // behind the camera
+      EXPECT_NEAR(seen->second.first, pixel->x(), 2) << key.first << " at " << key.second << " ms: pixels across";
+      EXPECT_NEAR(seen->second.second, pixel->y(), 2) << key.first << " at " << key.second << " ms: pixels down";
     }
-    if (real_speed) {
-      EXPECT_EQ(int(at(drawn.arrows, ms).size()), arrows) << "arrows at " << ms << " ms";
-      EXPECT_EQ(at(drawn.dots, ms).size(), list.points.size()) << "dots at " << ms << " ms";
-      for (const render::PointItem& dot : list.points) {
-        const std::vector<double> place{dot.position.x(), dot.position.y(), dot.position.z()};
-        EXPECT_TRUE(holds(at(drawn.dots, ms), place, hex(dot.colour))) << "a dot at " << ms << " ms at " << dot.position.transpose();
+    EXPECT_GE(compared, 1) << "bodies compared: the moments are no steps of the trace";
+
+    // The marks, as the video's film draws them at the same moments (its stills): its rods and
+    // ropes and velocity arrows; and where the video has no slow motion (which holds contacts on
+    // screen by the slowed clock), every arrow and dot too. Its equations, in every case.
+    demos::SceneFilm& film = *films[p];
+    for (int k = 0; k < film.picture_count(); ++k) {
+      demos::ScenePicture picture;
+      film.next(picture);
+      const long ms = std::lround(picture.time * 1000);
+      const render::DrawList& list = picture.draw_list;
+      for (const render::LineItem& line : list.lines)
+        EXPECT_TRUE(holds(at(in.lines, ms), numbers_of(line.from, line.to), hex(line.colour), true)) << "a line at " << ms << " ms";
+      EXPECT_EQ(at(in.lines, ms).size(), list.lines.size()) << "lines at " << ms << " ms";
+      int arrows = 0;
+      for (const render::ArrowItem& arrow : list.arrows) {
+        if (!real_speed && hex(arrow.colour) != hex(demos::mark_colour::velocity)) continue;
+        if (arrow.direction.norm() < 1e-6) continue;  // drawn as nothing
+        ++arrows;
+        EXPECT_TRUE(holds(at(in.arrows, ms), numbers_of(arrow.origin, arrow.direction), hex(arrow.colour)))
+            << "an arrow at " << ms << " ms from " << arrow.origin.transpose() << " along " << arrow.direction.transpose();
+      }
+      if (real_speed) {
+        EXPECT_EQ(int(at(in.arrows, ms).size()), arrows) << "arrows at " << ms << " ms";
+        EXPECT_EQ(at(in.dots, ms).size(), list.points.size()) << "dots at " << ms << " ms";
+        for (const render::PointItem& dot : list.points) {
+          const std::vector<double> place{dot.position.x(), dot.position.y(), dot.position.z()};
+          EXPECT_TRUE(holds(at(in.dots, ms), place, hex(dot.colour))) << "a dot at " << ms << " ms at " << dot.position.transpose();
+        }
+      }
+      // Each of the pane's equations: in its corner of this pane, or of the view where every pane
+      // shows it alike.
+      const auto shown = drawn.equations.find(ms);
+      for (const render::OverlayPanel& panel : picture.overlay.panels) {
+        if (!panel.math.svg) continue;
+        const uint32_t hash = fnv1a(*panel.math.svg);
+        const bool found = shown != drawn.equations.end() &&
+                           std::any_of(shown->second.begin(), shown->second.end(), [&](const Equation& equation) {
+                             return equation.hash == hash && equation.place == places[int(panel.place)] &&
+                                    (equation.pane == int(p) + 1 || equation.pane == 0);
+                           });
+        EXPECT_TRUE(found) << "the equation " << panel.math.tex << " at " << ms << " ms, " << places[int(panel.place)];
+        equations_seen[ms] += 1;
       }
     }
   }
+  // And none that the video does not show.
+  for (const auto& [ms, shown] : drawn.equations)
+    EXPECT_LE(shown.size(), equations_seen[ms]) << "equations at " << ms << " ms";
 }
 
 INSTANTIATE_TEST_SUITE_P(Catalogue, EveryScene, ::testing::ValuesIn(testing::catalogue_scene_names()),

@@ -10,6 +10,7 @@ import fs from 'node:fs';
 import net from 'node:net';
 import os from 'node:os';
 import path from 'node:path';
+import zlib from 'node:zlib';
 import { check, finish, launchChromium } from '../support/browser.mjs';
 
 const [program, scratch, nodeModules] = process.argv.slice(2);
@@ -79,7 +80,14 @@ async function opens(host) {
 }
 
 const home = await ask('/');
-check(home.status === 200 && home.body.includes('id="impulse-live"') && home.body.includes('"name":"box"'), 'GET / is the live page with the scene');
+// The run in a page: JSON, gzipped, in base64.
+const runOf = (html) => {
+  const packed = /<script id="impulse-run" type="application\/gzip;base64">([^<]*)<\/script>/.exec(html);
+  return packed ? JSON.parse(zlib.gunzipSync(Buffer.from(packed[1], 'base64')).toString()) : null;
+};
+const homeRun = home.status === 200 ? runOf(home.body) : null;
+check(home.body.includes('id="impulse-live"') && homeRun !== null && homeRun.bodies.some((body) => body.name === 'box'),
+      'GET / is the live page with the scene');
 const state = await ask('/state');
 check(state.status === 200 && JSON.parse(state.body).error === '', 'GET /state: ' + state.body);
 for (const target of ['/scene.toml', '/../scene.toml', '/%2e%2e/scene.toml', '/state/../scene.toml', '/..%2fscene.toml',
@@ -108,13 +116,7 @@ page.on('console', (message) => { if (message.type() === 'error') complaints.pus
 page.on('pageerror', (error) => complaints.push(error.message));
 page.on('requestfailed', (request) => complaints.push('failed: ' + request.url()));
 
-const boxAt = () => page.evaluate(() => {
-  const p = window.impulsePage;
-  const i = p.run.bodies.findIndex((body) => body.name === 'box');
-  const first = p.run.frames[0];
-  for (let at = 0; at < first.length; at += 8) if (first[at] === i) return first[at + 1];
-  return null;
-});
+const boxAt = () => page.evaluate(() => window.impulsePage.poseOf('box', 0)[0]);
 const versionOf = () => page.evaluate(() => window.impulsePage.version);
 await page.goto(address[0]);
 await until('the page', () => page.evaluate(() => window.impulsePage !== undefined));

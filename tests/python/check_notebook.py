@@ -6,6 +6,10 @@ the grade.
     python3 tests/python/check_notebook.py EXECUTED.ipynb
 """
 
+import base64
+import gzip
+import html
+import json
 import re
 import sys
 
@@ -26,12 +30,14 @@ def main(path):
     assert figures, "no figure: the speed plot is missing"
     videos = [d["text/html"] for d in data if d.get("text/html", "").startswith("<video")]
     assert len(videos) == 2, "expected the comparison and the student's bounce as videos, got %d" % len(videos)
-    for html in videos:
-        assert 'src="data:video/mp4;base64,' in html and 'poster="data:image/png;base64,' in html
+    for video in videos:
+        assert 'src="data:video/mp4;base64,' in video and 'poster="data:image/png;base64,' in video
     pages = [d["text/html"] for d in data if d.get("text/html", "").startswith("<iframe")]
     assert len(pages) == 1, "expected the friction scene's page inline, got %d" % len(pages)
     assert 'sandbox="allow-scripts"' in pages[0] and "impulse-run" in pages[0]
-    assert "&quot;name&quot;:&quot;sliding box&quot;" in pages[0], "the page holds the scene's bodies"
+    packed = re.search(r'<script id="impulse-run" type="application/gzip;base64">([^<]*)</script>', html.unescape(pages[0]))
+    run = json.loads(gzip.decompress(base64.b64decode(packed.group(1))))
+    assert "sliding box" in [body["name"] for body in run["bodies"]], "the page holds the scene's bodies"
     assert "<impulse.Trace of ex1_friction" in text
     match = re.search(r"after [\d.]+ s: ([\d.]+) m/s with friction, ([\d.]+) m/s without", text)
     assert match and float(match.group(1)) < float(match.group(2)), "friction must slow the box: " + str(match)
