@@ -1,5 +1,6 @@
 #include "demos/page/page_export.h"
 
+#include "demos/film/camera_path.h"
 #include "demos/film/film.h"
 #include "demos/film/live_equations.h"
 #include "demos/film/marks.h"
@@ -143,7 +144,7 @@ struct MarkedFrame {
 // none) and lines (from, to, colour, width in pixels), colours as indices into a palette; and the
 // legend, each arrow entry with the metres its round value is long.
 void write_marks(const Scene& scene, const WorldTake& take, const ArrowScales& scales, const std::vector<MarkedFrame>& frames,
-                 std::ostream& out) {
+                 const std::vector<render::Camera>& cameras, std::ostream& out) {
   std::vector<physics::Body> bodies = take.bodies();
   std::vector<render::Colour> palette;
   auto colour = [&](std::string& to, const render::Colour& c) {
@@ -160,7 +161,7 @@ void write_marks(const Scene& scene, const WorldTake& take, const ArrowScales& s
   for (size_t k = 0; k < frames.size(); ++k) {
     const MarkedFrame& frame = frames[k];
     for (size_t i = 0; i < bodies.size(); ++i) bodies[i].velocity = frame.velocities[i];
-    const render::DrawList list = scene_draw_list(scene, bodies, frame.poses, take.joints(), frame.contacts, scales, to_render(scene.camera));
+    const render::DrawList list = scene_draw_list(scene, bodies, frame.poses, take.joints(), frame.contacts, scales, cameras[k]);
     std::string arrows, dots, lines;
     for (const render::ArrowItem& arrow : list.arrows) {
       point(arrows, arrow.origin);
@@ -194,7 +195,7 @@ void write_marks(const Scene& scene, const WorldTake& take, const ArrowScales& s
     vector(out, physics::Vec3(palette[k].r, palette[k].g, palette[k].b));
   }
   // The video's legend, at its size: an arrow entry's pixels back into metres at the camera's target.
-  const render::Camera camera = to_render(scene.camera);
+  const render::Camera& camera = cameras.front();
   const render::CameraView view = render::make_camera_view(camera, scene.video.width, scene.video.height);
   const double pixels_per_metre = view.pixels_per_metre(camera.target);
   out << "],\"legend\":[";
@@ -221,6 +222,7 @@ struct PaneRecord {
   std::string motion;  // per frame, the bodies whose velocity or spin changed: index, then v, ω
   std::vector<MarkedFrame> marked;     // where the scene marks anything
   std::vector<ImpactNumbers> impacts;  // each frame's latest impact, for the equations
+  std::vector<physics::Vec3> followed; // each frame's position of the body the camera follows
 };
 
 // Whether the scene draws marks: contact points, normals, impulses, friction, velocities, rods.
@@ -263,7 +265,7 @@ long long units(double value, double per_unit) { return std::llround((std::isfin
 // Positions to 1e-5 m, orientations to 1e-6; velocities and spins to 1e-4 (m/s, rad/s: a resting
 // body's jitter below it costs nothing). A body at rest or asleep costs nothing.
 PaneRecord record(const Pane& pane) {
-  PaneRecord run{pane.scene, pane.label, std::make_unique<WorldTake>(*pane.scene), "", "", {}, {}};
+  PaneRecord run{pane.scene, pane.label, std::make_unique<WorldTake>(*pane.scene), "", "", {}, {}, {}};
   const Scene& scene = *pane.scene;
   WorldTake& take = *run.take;
   const long frames = frame_count(scene);
@@ -296,7 +298,9 @@ PaneRecord record(const Pane& pane) {
     run.motion += ']';
     if (marked) run.marked.push_back({sample.poses, sample.velocities, sample.contacts});
     run.impacts.push_back(sample.impact);
+    if (const int body = find_body(scene, scene.camera_motion.follow); body >= 0) run.followed.push_back(sample.poses[size_t(body)].position);
   }
+  while (!take.finished()) take.step();  // to the end, as the film: the summary (scales, impacts, extent) is the whole run's
   return run;
 }
 
@@ -366,7 +370,8 @@ class PanelTable {
 };
 
 // A pane's own part of the run: gravity, bodies, frames, motion, marks and equation panels.
-void write_pane(const PaneRecord& run, const ArrowScales& scales, const std::string& panel_frames, std::ostream& out) {
+void write_pane(const PaneRecord& run, const ArrowScales& scales, const std::vector<render::Camera>& cameras, const std::string& panel_frames,
+                std::ostream& out) {
   const Scene& scene = *run.scene;
   const std::vector<physics::Body>& bodies = run.take->bodies();
   out << "\"gravity\":";
@@ -377,8 +382,28 @@ void write_pane(const PaneRecord& run, const ArrowScales& scales, const std::str
     body_json(out, bodies[i], scene.colours[i]);
   }
   out << "],\"frames\":[" << run.frames << "],\"motion\":[" << run.motion << ']';
-  if (marks_anything(scene, *run.take)) write_marks(scene, *run.take, scales, run.marked, out);
+  if (marks_anything(scene, *run.take)) write_marks(scene, *run.take, scales, run.marked, cameras, out);
   if (!panel_frames.empty()) out << ",\"panel_frames\":[" << panel_frames << ']';
+}
+
+// The video's camera at each frame: the scene's, or where [camera] follow, keyframes or fit move
+// it (CameraPath, as the film moves it; a comparison's as its first pane's, fitted to a pane).
+std::vector<render::Camera> camera_frames(const std::vector<PaneRecord>& runs, const TakeSummary& shared) {
+  const Scene& scene = *runs.front().scene;
+  CameraPath path(scene);
+  if (scene.camera_motion.fit) {
+    const PaneLayout layout = pane_layout(int(runs.size()), scene.video.width, scene.video.height, !scene.overlay.plots.empty(), !scene.captions.empty());
+    path.fit(shared.moving_extent, double(layout.width) / layout.height);
+  }
+  std::vector<render::Camera> cameras;
+  const PaneRecord& first = runs.front();
+  for (size_t k = 0; k < first.impacts.size(); ++k)
+    cameras.push_back(path.at(double(k) / scene.video.fps, first.followed.empty() ? physics::Vec3::Zero() : first.followed[k]));
+  return cameras;
+}
+
+bool camera_moves(const Scene& scene) {
+  return !scene.camera_motion.follow.empty() || !scene.camera_motion.keyframes.empty() || scene.camera_motion.fit;
 }
 
 void write_captions(std::ostream& out, const std::vector<CaptionCue>& captions, bool own, double duration) {
@@ -416,13 +441,32 @@ void write_run_json(const std::vector<Pane>& panes, std::ostream& out) {
   text(out, scene.title);
   out << ",\"fps\":" << fps << ",\"duration\":";
   number(out, scene.duration);
+  // The camera the page starts from: the video's first; and where it moves, the video's at each
+  // frame (x y z, target x y z, field of view), which the page follows until it is orbited.
+  const std::vector<render::Camera> cameras = camera_frames(runs, shared);
+  const render::Camera& start = cameras.front();
   out << ",\"camera\":{\"position\":";
-  vector(out, scene.camera.position.cast<double>());
+  vector(out, start.position.cast<double>());
   out << ",\"target\":";
-  vector(out, scene.camera.target.cast<double>());
+  vector(out, start.target.cast<double>());
   out << ",\"fov_y_degrees\":";
-  number(out, scene.camera.fov_y_degrees);
-  out << "},\"captions\":";
+  number(out, start.fov_y_degrees);
+  out << '}';
+  if (camera_moves(scene)) {
+    std::string path;
+    for (const render::Camera& camera : cameras) {
+      std::string numbers;
+      for (int c = 0; c < 3; ++c) fixed(numbers, camera.position[c], 4);
+      for (int c = 0; c < 3; ++c) fixed(numbers, camera.target[c], 4);
+      fixed(numbers, camera.fov_y_degrees, 3);
+      numbers[0] = '[';
+      path += path.empty() ? "" : ",";
+      path += numbers;
+      path += ']';
+    }
+    out << ",\"camera_path\":[" << path << ']';
+  }
+  out << ",\"captions\":";
   write_captions(out, scene.captions, false, scene.duration);
   // The video's playback: simulated s per second of video at each frame (slower around an impact
   // of any pane), and the speed outside them.
@@ -441,7 +485,7 @@ void write_run_json(const std::vector<Pane>& panes, std::ostream& out) {
   if (!panels.empty()) panels.write(out);
   if (runs.size() == 1) {
     out << ',';
-    write_pane(runs.front(), arrow_scales(scene, shared), panel_frames.front(), out);
+    write_pane(runs.front(), arrow_scales(scene, shared), cameras, panel_frames.front(), out);
   } else {
     // Each pane's own bodies and run, with the label naming what sets it apart, in its colour.
     out << ",\"panes\":[";
@@ -454,7 +498,7 @@ void write_run_json(const std::vector<Pane>& panes, std::ostream& out) {
       out << ",\"captions\":";
       write_captions(out, runs[p].scene->captions, true, scene.duration);
       out << ',';
-      write_pane(runs[p], arrow_scales(*runs[p].scene, shared), panel_frames[p], out);
+      write_pane(runs[p], arrow_scales(*runs[p].scene, shared), cameras, panel_frames[p], out);
       out << '}';
     }
     out << ']';

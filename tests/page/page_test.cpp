@@ -320,6 +320,53 @@ TEST_P(EveryScene, ThePageDrawsEachBodyWhereTheTraceAndTheVideosCameraPutIt) {
 INSTANTIATE_TEST_SUITE_P(Catalogue, EveryScene, ::testing::ValuesIn(testing::catalogue_scene_names()),
                          [](const ::testing::TestParamInfo<std::string>& scene) { return scene.param; });
 
+// A scene whose video's camera moves (follow, fit, keyframes): the page starts from the video's
+// first camera and follows it frame by frame, each body where the video's frame shows it (within
+// 2 px at 854 x 480).
+TEST(Page, FollowsTheVideosMovingCamera) {
+  const std::string bodies =
+      "[[body]]\nname = \"ground\"\nshape = \"plane\"\n\n"
+      "[[body]]\nname = \"ball\"\nshape = \"sphere\"\nradius = 0.3\nposition = [-4, 2, 0]\nvelocity = [4, 3, 0]\n\n"
+      "[[body]]\nname = \"box\"\nshape = \"box\"\nsize = [0.6, 0.6, 0.6]\nposition = [2, 0.3, -1]\n";
+  const std::map<std::string, std::string> cameras = {
+      {"follow", "[camera]\nposition = [-4, 3, 8]\ntarget = [-4, 1.5, 0]\nfollow = \"ball\"\n"},
+      {"fit", "[camera]\nposition = [0, 30, 60]\ntarget = [0, 1, 0]\nfit = true\n"},
+      {"keyframes", "[camera]\nposition = [0, 3, 12]\ntarget = [0, 1, 0]\n\n[[camera.keyframe]]\ntime = 1.5\nposition = [6, 4, 8]\ntarget = [1, 1, 0]\n"}};
+  for (const auto& [name, camera] : cameras) {
+    SCOPED_TRACE(name);
+    const fs::path dir = testing::scratch("page_test", "camera_" + name);
+    const fs::path source = dir / "scene.toml", page = dir / "page.html";
+    std::ofstream(source) << "[scene]\ntitle = \"camera\"\nduration = 2\n\n" << camera << "\n" << bodies;
+    const testing::ChildResult exported = testing::run_child({IMPULSE_PROGRAM, "-q", "export", source.string(), "-o", page.string()});
+    ASSERT_TRUE(exported.succeeded()) << exported.describe();
+    const demos::Scene scene = demos::load_scene(source.string());
+    ASSERT_EQ(scene.video.fps, 30);
+    const Drawn drawn = opened(page, dir, "0,0.5,1.5");
+    EXPECT_EQ(drawn.errors, "");
+    ASSERT_EQ(drawn.panes.size(), 1u);
+    // The video's frames at those moments (real speed: its frames are k / fps), each with its camera.
+    demos::SceneFilm film(scene, 854, 480);
+    int compared = 0;
+    for (int k = 0; k < film.picture_count(); ++k) {
+      demos::ScenePicture picture;
+      film.next(picture);
+      if (picture.frame != 0 && picture.frame != 15 && picture.frame != 45) continue;
+      const long ms = std::lround(picture.frame * 1000.0 / 30);
+      const render::CameraView view = render::make_camera_view(picture.draw_list.camera, 854, 480);
+      for (const auto& [key, pose] : drawn.panes[0].poses) {
+        if (key.second != ms) continue;
+        const auto pixel = view.to_pixels(Eigen::Vector3f(float(pose[0]), float(pose[1]), float(pose[2])));
+        const auto seen = drawn.panes[0].pixels.find(key);
+        ASSERT_TRUE(pixel && seen != drawn.panes[0].pixels.end()) << key.first << " at " << ms << " ms";
+        EXPECT_NEAR(seen->second.first, pixel->x(), 2) << key.first << " at " << ms << " ms: pixels across";
+        EXPECT_NEAR(seen->second.second, pixel->y(), 2) << key.first << " at " << ms << " ms: pixels down";
+        ++compared;
+      }
+    }
+    EXPECT_EQ(compared, 6) << "two bodies at three moments";
+  }
+}
+
 // A scene that cannot be read writes no page, and says where it is wrong.
 TEST(Page, ABadSceneWritesNothing) {
   const fs::path dir = testing::scratch("page_test", "bad");

@@ -550,8 +550,37 @@ function start(run) {
     return shownTime;
   }
   const shownCaption = (captions, time) => (captions || []).find((c) => c.start <= time && time < c.end);
+  // The video's camera where it moves ([camera] follow, keyframes, fit): followed frame by frame
+  // until the viewer orbits, zooms or pans; the box in the bar takes it back.
+  const path = run.camera_path || null;
+  const follow = document.createElement('input');
+  if (path) {
+    follow.type = 'checkbox';
+    follow.id = 'follow';
+    follow.checked = true;
+    const label = document.createElement('label');
+    label.append(follow, ' video\u2019s camera');
+    speed.parentElement.before(label);
+    controls.addEventListener('start', () => { follow.checked = false; });
+    follow.addEventListener('change', () => followPath());
+  }
+  function followPath() {
+    if (!path || !follow.checked) return;
+    const c = path[frame];
+    camera.position.set(c[0], c[1], c[2]);
+    controls.target.set(c[3], c[4], c[5]);
+    if (camera.fov !== c[6]) {
+      camera.fov = c[6];
+      camera.updateProjectionMatrix();
+    }
+    controls.update();
+    sizeDots();
+    showLegend();
+    redraw();
+  }
   function setFrame(k) {
     frame = Math.max(0, Math.min(frameCount - 1, k));
+    followPath();
     slider.value = String(frame);
     const time = frame / run.fps;
     clock.textContent = 't = ' + time.toFixed(2) + ' s' + (slowAt(frame) ? '  slow motion \u00d7' + (run.speeds[frame] / run.playback_speed).toFixed(2) : '');
@@ -720,6 +749,7 @@ function start(run) {
     const keptKey = 'impulse-preview-view';
     const kept = JSON.parse(sessionStorage.getItem(keptKey) || 'null');
     if (kept) {
+      follow.checked = kept.following;
       camera.position.fromArray(kept.position);
       controls.target.fromArray(kept.target);
       controls.update();
@@ -736,7 +766,7 @@ function start(run) {
         const state = await (await fetch('state', { cache: 'no-store' })).json();
         if (state.version !== version && !state.error && !state.busy) {
           sessionStorage.setItem(keptKey, JSON.stringify({ position: camera.position.toArray(), target: controls.target.toArray(),
-                                                           time: frame / run.fps, playing }));
+                                                           time: frame / run.fps, playing, following: follow.checked }));
           window.location.reload();
           return;
         }
