@@ -5,6 +5,7 @@
 #include "demos/film/live_equations.h"
 #include "demos/film/marks.h"
 #include "demos/film/playback_timeline.h"
+#include "demos/film/plot_recorder.h"
 #include "demos/film/render_types.h"
 #include "demos/film/scene_draw_list.h"
 #include "demos/film/world_take.h"
@@ -386,6 +387,62 @@ void write_pane(const PaneRecord& run, const ArrowScales& scales, const std::vec
   if (!panel_frames.empty()) out << ",\"panel_frames\":[" << panel_frames << ']';
 }
 
+// The video's live plots ([overlay] plots), whole: per plot its title, unit, time axis, value range
+// (every pane's largest), and each curve's colour and points (t, value), as many as the video's
+// last frame draws (every step, or every 2nd, 4th ... of a long run); a comparison's panes' curves
+// on the same axes, each in its pane's colour. The page draws each up to the moment shown.
+void write_plots(const std::vector<PaneRecord>& runs, const TakeSummary& shared, std::ostream& out) {
+  std::vector<render::Plot> plots;
+  for (size_t p = 0; p < runs.size(); ++p) {
+    const Scene& scene = *runs[p].scene;
+    const WorldTake& take = *runs[p].take;
+    std::vector<PlotCurve> curves;
+    for (const int body : plotted_bodies(take.bodies(), scene.overlay.plot_bodies))
+      curves.push_back({take.bodies()[size_t(body)].name, to_render(scene.colours[size_t(body)])});
+    std::vector<render::Plot> own = take.plots().plots(take.plots().steps(), scene.duration, shared.plot_maxima, curves);
+    for (size_t k = 0; k < own.size(); ++k) {
+      if (k == plots.size()) {
+        plots.push_back(own[k]);
+        plots.back().series.clear();
+      }
+      for (render::PlotSeries& series : own[k].series) {
+        if (runs.size() > 1) series.colour = pane_colour(int(p));
+        plots[k].series.push_back(std::move(series));
+      }
+    }
+  }
+  out << ",\"plots\":[";
+  for (size_t k = 0; k < plots.size(); ++k) {
+    const render::Plot& plot = plots[k];
+    out << (k > 0 ? "," : "") << "{\"title\":";
+    text(out, plot.title);
+    out << ",\"unit\":";
+    text(out, plot.unit);
+    out << ",\"x_start\":";
+    number(out, plot.x_start);
+    out << ",\"x_end\":";
+    number(out, plot.x_end);
+    out << ",\"y_min\":";
+    number(out, plot.y_min);
+    out << ",\"y_max\":";
+    number(out, plot.y_max);
+    out << ",\"series\":[";
+    for (size_t c = 0; c < plot.series.size(); ++c) {
+      const render::PlotSeries& series = plot.series[c];
+      out << (c > 0 ? "," : "") << "{\"colour\":";
+      vector(out, physics::Vec3(series.colour.r, series.colour.g, series.colour.b));
+      std::string points;
+      for (const render::Vec2f& point : series.points) {
+        fixed(points, point.x(), 4);
+        fixed(points, point.y(), 4);
+      }
+      out << ",\"points\":[" << points.substr(points.empty() ? 0 : 1) << "]}";
+    }
+    out << "]}";
+  }
+  out << ']';
+}
+
 // The video's camera at each frame: the scene's, or where [camera] follow, keyframes or fit move
 // it (CameraPath, as the film moves it; a comparison's as its first pane's, fitted to a pane).
 std::vector<render::Camera> camera_frames(const std::vector<PaneRecord>& runs, const TakeSummary& shared) {
@@ -479,6 +536,7 @@ void write_run_json(const std::vector<Pane>& panes, std::ostream& out) {
     number(out, timeline.speed_at(double(k) / fps));
   }
   out << ']';
+  if (!scene.overlay.plots.empty()) write_plots(runs, shared, out);
   PanelTable panels;
   std::vector<std::string> panel_frames;
   for (const PaneRecord& run : runs) panel_frames.push_back(panels.frames(run));
@@ -547,8 +605,9 @@ void write_html(const std::string& script, std::ostream& out, bool live, const s
          ".bottom { bottom: 16px; left: 50%; transform: translateX(-50%); align-items: center; width: 80%; }\n"
          ".pane .top-left { top: 8px; left: 8px; } .pane .top-right { top: 8px; right: 8px; } .pane .bottom-left { bottom: 40px; left: 8px; }\n"
          ".pane .bottom-right { bottom: 8px; right: 8px; } .pane .bottom { bottom: 8px; }\n"
-         ".equation { padding: 6px 10px; border-radius: 8px; background: rgba(255, 255, 255, 0.92); font-size: 14px; }\n"
-         ".equation img { display: block; margin-top: 2px; }\n"
+         ".plot, .equation { padding: 6px 10px; border-radius: 8px; background: rgba(255, 255, 255, 0.92); font-size: 14px; }\n"
+         ".equation img { display: block; margin-top: 2px; }\n.plot svg { display: block; margin-top: 2px; }\n"
+         "#plots { display: flex; flex-direction: column; gap: 8px; align-items: flex-end; }\n"
          ".label { position: absolute; left: 8px; bottom: 8px; padding: 3px 10px; border: 2px solid; border-radius: 6px; background: rgba(255, 255, 255, 0.9); font-size: 15px; }\n"
          "#bar { position: absolute; left: 0; right: 0; bottom: 0; height: 56px; display: flex; gap: 10px; align-items: center; padding: 0 14px; background: #fff; }\n"
          "#time { flex: 1; }\n#clock { font-family: 'DejaVu Sans Mono', monospace; min-width: 7em; }\n"

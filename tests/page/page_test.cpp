@@ -56,10 +56,16 @@ struct Equation {
   int pane = 0;
   uint32_t hash = 0;
 };
-// What the page drew: each pane's, the equations by moment (ms), its errors.
+// A plot's curve as the page drew it: its last point.
+struct PlotEnd {
+  int plot = 0, curve = 0;
+  double time = 0, value = 0;
+};
+// What the page drew: each pane's, the equations and the plots by moment (ms), its errors.
 struct Drawn {
   std::vector<PaneDrawn> panes;
   std::map<long, std::vector<Equation>> equations;
+  std::map<long, std::vector<PlotEnd>> plots;
   int width = 0, height = 0;  // a pane's
   std::string errors;
   bool gl = false;
@@ -113,6 +119,12 @@ Drawn opened(const fs::path& page, const fs::path& dir, const std::string& momen
       Equation equation;
       words >> equation.place >> equation.pane >> equation.hash;
       drawn.equations[ms].push_back(equation);
+      continue;
+    }
+    if (kind == "PLOT") {
+      PlotEnd end;
+      words >> end.plot >> end.curve >> end.time >> end.value;
+      drawn.plots[ms].push_back(end);
       continue;
     }
     PaneDrawn& in = drawn.panes[pane];
@@ -187,7 +199,8 @@ class EveryScene : public ::testing::TestWithParam<std::string> {};
 // 1001-body heap: 25 MB; the two 231-box pyramids of ex3_stacks, one falling all the while: 4 MB).
 // And what the video's film shows at those moments: the marks (rods, ropes, velocity arrows; at
 // real speed also contact dots and arrows), each where the film puts it within 1e-3 m, in its
-// colour; and each typeset equation, the same SVG in the same corner of the same pane.
+// colour; each typeset equation, the same SVG in the same corner of the same pane; and each plot's
+// curves, drawn to the same moment on the film's points.
 TEST_P(EveryScene, ThePageDrawsEachBodyWhereTheTraceAndTheVideosCameraPutIt) {
   const std::string name = GetParam();
   const fs::path dir = testing::scratch("page_test", name);
@@ -296,6 +309,26 @@ TEST_P(EveryScene, ThePageDrawsEachBodyWhereTheTraceAndTheVideosCameraPutIt) {
           EXPECT_TRUE(holds(at(in.dots, ms), place, hex(dot.colour))) << "a dot at " << ms << " ms at " << dot.position.transpose();
         }
       }
+      // Each curve of its plots, to the same moment (the last point the page draws within the
+      // whole run's sampling of the film's), on the film's points.
+      for (size_t plot = 0; plot < picture.overlay.plots.size(); ++plot)
+        for (const render::PlotSeries& series : picture.overlay.plots[plot].series) {
+          if (series.points.empty()) continue;
+          const auto drawn_at = drawn.plots.find(ms);
+          const bool found = drawn_at != drawn.plots.end() &&
+                             std::any_of(drawn_at->second.begin(), drawn_at->second.end(), [&](const PlotEnd& end) {
+                               // The whole run's points are at most (x_end - x_start) / 1024 apart.
+                               const render::Plot& axes = picture.overlay.plots[plot];
+                               if (end.plot != int(plot) || end.time > series.points.back().x() + 1e-4 ||
+                                   end.time < series.points.back().x() - (axes.x_end - axes.x_start) / 1024 - 1e-4)
+                                 return false;
+                               return std::any_of(series.points.begin(), series.points.end(), [&](const render::Vec2f& point) {
+                                 return std::abs(point.x() - end.time) < 1e-4 && std::abs(point.y() - end.value) < 1e-3 * std::max(1.0, std::abs(end.value));
+                               });
+                             });
+          EXPECT_TRUE(found) << "plot " << picture.overlay.plots[plot].title << " at " << ms << " ms: the film's curve ends at ("
+                             << series.points.back().transpose() << ")";
+        }
       // Each of the pane's equations: in its corner of this pane, or of the view where every pane
       // shows it alike.
       const auto shown = drawn.equations.find(ms);

@@ -297,9 +297,12 @@ function start(run) {
       panes[0].rect = { x: 0, y: 0, width, height };
       return;
     }
+    // The plots, as the video's: in a row under one row of panes, in a column beside two.
     const columns = 2, rows = Math.ceil(panes.length / 2);
+    const plotted = run.plots && !exact;
     const [top, band, gap] = exact ? [0, 0, 0] : [64, 116, 8];
-    const roomWidth = width - (columns + 1) * gap, roomHeight = height - top - band - rows * gap;
+    const plotsBand = plotted && rows === 1 ? plotHeight + 40 : 0, plotsColumn = plotted && rows > 1 ? plotWidth + 32 : 0;
+    const roomWidth = width - plotsColumn - (columns + 1) * gap, roomHeight = height - top - band - plotsBand - rows * gap;
     let paneWidth, paneHeight;
     if (exact) {
       [paneWidth, paneHeight] = exact;
@@ -312,13 +315,19 @@ function start(run) {
     }
     paneWidth = Math.max(1, Math.floor(paneWidth));
     paneHeight = Math.max(1, Math.floor(paneHeight));
-    const left = Math.round((width - columns * paneWidth - (columns - 1) * gap) / 2);
-    const upper = top + Math.max(0, Math.round((height - top - band - rows * paneHeight - (rows - 1) * gap) / 2));
+    const left = Math.round((width - plotsColumn - columns * paneWidth - (columns - 1) * gap) / 2);
+    const blockHeight = rows * paneHeight + (rows - 1) * gap + plotsBand;
+    const upper = top + Math.max(0, Math.round((height - top - band - blockHeight) / 2));
     panes.forEach((pane, i) => {
       pane.rect = { x: left + (i % columns) * (paneWidth + gap), y: upper + Math.floor(i / columns) * (paneHeight + gap),
                     width: paneWidth, height: paneHeight };
       Object.assign(pane.box.style, { left: pane.rect.x + 'px', top: pane.rect.y + 'px', width: pane.rect.width + 'px', height: pane.rect.height + 'px' });
     });
+    if (plotted) {
+      overlay.append(plotBox);
+      Object.assign(plotBox.style, rows === 1 ? { position: 'absolute', flexDirection: 'row', left: left + 'px', top: upper + paneHeight + gap + 'px' }
+        : { position: 'absolute', right: gap + 'px', top: upper + 'px' });
+    }
   }
 
   // A dot `radius_pixels` across on screen, but no larger than its largest radius where it is.
@@ -433,6 +442,71 @@ function start(run) {
       }
     });
     sizePanels();
+  }
+
+  // The video's live plots (run.plots: every curve of the whole run, on the run's axes): each drawn
+  // up to the moment shown, its latest value in the heading in its colour.
+  const svgNamespace = 'http://www.w3.org/2000/svg';
+  const plotBox = document.createElement('div');
+  plotBox.id = 'plots';
+  if (run.plots) whole['top-right'].prepend(plotBox);
+  const plotWidth = 260, plotHeight = 84;
+  const plots = (run.plots || []).map((plot) => {
+    const element = document.createElement('div');
+    element.className = 'plot';
+    const heading = document.createElement('div');
+    const svg = document.createElementNS(svgNamespace, 'svg');
+    svg.setAttribute('width', String(plotWidth));
+    svg.setAttribute('height', String(plotHeight));
+    svg.innerHTML = `<path d="M0.5 0.5V${plotHeight - 0.5}H${plotWidth - 0.5}" fill="none" stroke="#8a8f99"/>`;
+    let top = plot.y_max, bottom = plot.y_min;
+    if (!(top > bottom)) {  // no fixed range: the points'
+      const values = plot.series.flatMap((series) => series.points.filter((v, at) => at % 2 === 1));
+      top = Math.max(bottom + 1e-9, ...values);
+    }
+    const curves = plot.series.map((series) => {
+      const line = document.createElementNS(svgNamespace, 'polyline');
+      Object.entries({ fill: 'none', stroke: cssOf(series.colour), 'stroke-width': '2', 'stroke-linejoin': 'round' })
+        .forEach(([name, value]) => line.setAttribute(name, value));
+      svg.append(line);
+      const times = [], values = [], pixels = [];
+      for (let at = 0; at < series.points.length; at += 2) {
+        const [t, v] = [series.points[at], series.points[at + 1]];
+        times.push(t);
+        values.push(v);
+        pixels.push(((1 + ((t - plot.x_start) / (plot.x_end - plot.x_start)) * (plotWidth - 2)).toFixed(1) + ',' +
+                     (plotHeight - 1 - ((v - bottom) / (top - bottom)) * (plotHeight - 4)).toFixed(1)));
+      }
+      return { line, times, values, pixels, colour: cssOf(series.colour), shown: -1 };
+    });
+    element.append(heading, svg);
+    plotBox.append(element);
+    return { plot, heading, curves };
+  });
+  function showPlots(time) {
+    for (const { plot, heading, curves } of plots) {
+      const latest = [];
+      for (const curve of curves) {
+        let n = 0, high = curve.times.length;  // the points at or before `time`
+        while (n < high) {
+          const middle = (n + high) >> 1;
+          if (curve.times[middle] <= time + 6e-5) n = middle + 1; else high = middle;  // times to 1e-4 s
+        }
+        if (n !== curve.shown) {
+          curve.line.setAttribute('points', curve.pixels.slice(0, n).join(' '));
+          curve.shown = n;
+        }
+        if (n > 0) latest.push([curve.values[n - 1], curve.colour]);
+      }
+      heading.replaceChildren(plot.title + (latest.length ? ': ' : ''));
+      latest.forEach(([value, colour], i) => {
+        const number = document.createElement('span');
+        number.style.color = colour;
+        number.textContent = (i > 0 ? ', ' : '') + value.toFixed(2);
+        heading.append(number);
+      });
+      heading.append(' ' + plot.unit);
+    }
   }
 
   // Drawn again only when something changed: the moment, the camera, the view's size.
@@ -594,6 +668,7 @@ function start(run) {
       pane.showFrame(frame);
     }
     showPanels(frame);
+    showPlots(time);
     sizeDots();
     redraw();
     if (chosen) showPanel();
@@ -727,6 +802,10 @@ function start(run) {
         for (let i = 0; i < text.length; ++i) hash = Math.imul(hash ^ text.charCodeAt(i), 0x01000193) >>> 0;
         return hash;
       };
+      // Each plot's curves as drawn: "PLOT t plot curve t_last value_last" (from 0; the last point shown).
+      plots.forEach(({ curves }, k) => curves.forEach((curve, c) => {
+        if (curve.shown > 0) lines.push(['PLOT', time, k, c, curve.times[curve.shown - 1], curve.values[curve.shown - 1]].join(' '));
+      }));
       for (const element of panelElements.values()) {
         if (!element.isConnected) continue;
         const box = element.closest('.pane');
