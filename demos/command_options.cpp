@@ -1,6 +1,7 @@
 #include "demos/command_options.h"
 
 #include "demos/film/moments.h"
+#include "render/part_file.h"
 #include "render/video_encoder.h"
 
 #include <exception>
@@ -140,7 +141,11 @@ RenderOptions output_options(const OutputArguments& arguments, const std::string
     if (options.png_directory.empty()) throw std::invalid_argument(std::string("--at chooses PNG stills") + add_png);
     options.moments = parse_moments(arguments.moments, "--at");
   }
-  if (path.empty() && !frames_only) fs::create_directories(fs::path(options.video_path).parent_path());
+  if (!frames_only) {  // -o's folder too, as export's
+    std::error_code error;
+    if (const fs::path parent = fs::path(options.video_path).parent_path(); !parent.empty() && !fs::create_directories(parent, error) && error)
+      throw render::OutputError("cannot make the folder " + parent.string() + " for " + options.video_path + ": " + error.message());
+  }
   return options;
 }
 

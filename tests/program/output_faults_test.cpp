@@ -67,6 +67,15 @@ class OutputFaults : public ::testing::Test {
   fs::path work_;
 };
 
+// -o into a folder that is not there yet makes it, as export does.
+TEST_F(OutputFaults, MakesTheFolderTheVideoGoesIn) {
+  const fs::path video = work_ / "lecture" / "week 3" / "bounce.mp4";
+  const testing::ChildResult made = render(video);
+  EXPECT_EQ(made.exit_code, 0) << made.describe();
+  EXPECT_GT(fs::file_size(video), 1000u);
+  expect_no_temporaries();
+}
+
 TEST_F(OutputFaults, RefusesToReplaceAnythingButARegularFile) {
   const fs::path fifo = work_ / "fifo.mp4";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
@@ -144,6 +153,11 @@ TEST_F(OutputFaults, AFullDiskOrAReadOnlyDirectoryIsAnOutputErrorThatKeepsThePre
   EXPECT_EQ(read_only.exit_code, kExitOutput) << read_only.describe();
   EXPECT_NE(read_only.stderr_text.find("Read-only file system"), std::string::npos) << read_only.stderr_text;
   EXPECT_EQ(contents(video), kPrevious);
+  // A folder -o names that cannot be made: said so, nothing written.
+  const testing::ChildResult no_folder = render(disk / "lecture" / "bounce.mp4");
+  EXPECT_EQ(no_folder.exit_code, kExitOutput) << no_folder.describe();
+  EXPECT_NE(no_folder.stderr_text.find("cannot make the folder " + (disk / "lecture").string()), std::string::npos) << no_folder.stderr_text;
+  EXPECT_NE(no_folder.stderr_text.find("Read-only file system"), std::string::npos) << no_folder.stderr_text;
   EXPECT_EQ(umount(disk.c_str()), 0);
 }
 
