@@ -145,7 +145,7 @@ struct MarkedFrame {
 // none) and lines (from, to, colour, width in pixels), colours as indices into a palette; and the
 // legend, each arrow entry with the metres its round value is long.
 void write_marks(const Scene& scene, const WorldTake& take, const ArrowScales& scales, const std::vector<MarkedFrame>& frames,
-                 const std::vector<render::Camera>& cameras, std::ostream& out) {
+                 const std::vector<render::Camera>& cameras, const PaneLayout& layout, std::ostream& out) {
   std::vector<physics::Body> bodies = take.bodies();
   std::vector<render::Colour> palette;
   auto colour = [&](std::string& to, const render::Colour& c) {
@@ -197,7 +197,7 @@ void write_marks(const Scene& scene, const WorldTake& take, const ArrowScales& s
   }
   // The video's legend, at its size: an arrow entry's pixels back into metres at the camera's target.
   const render::Camera& camera = cameras.front();
-  const render::CameraView view = render::make_camera_view(camera, scene.video.width, scene.video.height);
+  const render::CameraView view = render::make_camera_view(camera, layout.width, layout.height);  // a pane's, as the video's
   const double pixels_per_metre = view.pixels_per_metre(camera.target);
   out << "],\"legend\":[";
   bool first = true;
@@ -371,8 +371,8 @@ class PanelTable {
 };
 
 // A pane's own part of the run: gravity, bodies, frames, motion, marks and equation panels.
-void write_pane(const PaneRecord& run, const ArrowScales& scales, const std::vector<render::Camera>& cameras, const std::string& panel_frames,
-                std::ostream& out) {
+void write_pane(const PaneRecord& run, const ArrowScales& scales, const std::vector<render::Camera>& cameras, const PaneLayout& layout,
+                const std::string& panel_frames, std::ostream& out) {
   const Scene& scene = *run.scene;
   const std::vector<physics::Body>& bodies = run.take->bodies();
   out << "\"gravity\":";
@@ -383,7 +383,7 @@ void write_pane(const PaneRecord& run, const ArrowScales& scales, const std::vec
     body_json(out, bodies[i], scene.colours[i]);
   }
   out << "],\"frames\":[" << run.frames << "],\"motion\":[" << run.motion << ']';
-  if (marks_anything(scene, *run.take)) write_marks(scene, *run.take, scales, run.marked, cameras, out);
+  if (marks_anything(scene, *run.take)) write_marks(scene, *run.take, scales, run.marked, cameras, layout, out);
   if (!panel_frames.empty()) out << ",\"panel_frames\":[" << panel_frames << ']';
 }
 
@@ -443,13 +443,19 @@ void write_plots(const std::vector<PaneRecord>& runs, const TakeSummary& shared,
   out << ']';
 }
 
+// Where the video puts its panes (one: the whole frame).
+PaneLayout video_layout(const std::vector<PaneRecord>& runs) {
+  const Scene& scene = *runs.front().scene;
+  return pane_layout(int(runs.size()), scene.video.width, scene.video.height, !scene.overlay.plots.empty(), !scene.captions.empty());
+}
+
 // The video's camera at each frame: the scene's, or where [camera] follow, keyframes or fit move
 // it (CameraPath, as the film moves it; a comparison's as its first pane's, fitted to a pane).
 std::vector<render::Camera> camera_frames(const std::vector<PaneRecord>& runs, const TakeSummary& shared) {
   const Scene& scene = *runs.front().scene;
   CameraPath path(scene);
   if (scene.camera_motion.fit) {
-    const PaneLayout layout = pane_layout(int(runs.size()), scene.video.width, scene.video.height, !scene.overlay.plots.empty(), !scene.captions.empty());
+    const PaneLayout layout = video_layout(runs);
     path.fit(shared.moving_extent, double(layout.width) / layout.height);
   }
   std::vector<render::Camera> cameras;
@@ -543,7 +549,7 @@ void write_run_json(const std::vector<Pane>& panes, std::ostream& out) {
   if (!panels.empty()) panels.write(out);
   if (runs.size() == 1) {
     out << ',';
-    write_pane(runs.front(), arrow_scales(scene, shared), cameras, panel_frames.front(), out);
+    write_pane(runs.front(), arrow_scales(scene, shared), cameras, video_layout(runs), panel_frames.front(), out);
   } else {
     // Each pane's own bodies and run, with the label naming what sets it apart, in its colour.
     out << ",\"panes\":[";
@@ -556,7 +562,7 @@ void write_run_json(const std::vector<Pane>& panes, std::ostream& out) {
       out << ",\"captions\":";
       write_captions(out, runs[p].scene->captions, true, scene.duration);
       out << ',';
-      write_pane(runs[p], arrow_scales(*runs[p].scene, shared), cameras, panel_frames[p], out);
+      write_pane(runs[p], arrow_scales(*runs[p].scene, shared), cameras, video_layout(runs), panel_frames[p], out);
       out << '}';
     }
     out << ']';

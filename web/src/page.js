@@ -301,7 +301,7 @@ function start(run) {
     const columns = 2, rows = Math.ceil(panes.length / 2);
     const plotted = run.plots && !exact;
     const [top, band, gap] = exact ? [0, 0, 0] : [64, 116, 8];
-    const plotsBand = plotted && rows === 1 ? plotHeight + 40 : 0, plotsColumn = plotted && rows > 1 ? plotWidth + 32 : 0;
+    const plotsBand = plotted && rows === 1 ? plotHeight + 40 : 0, plotsColumn = plotted && rows > 1 ? plotWidth + 20 + 2 * gap : 0;  // 20: its padding
     const roomWidth = width - plotsColumn - (columns + 1) * gap, roomHeight = height - top - band - plotsBand - rows * gap;
     let paneWidth, paneHeight;
     if (exact) {
@@ -454,6 +454,7 @@ function start(run) {
   const plots = (run.plots || []).map((plot) => {
     const element = document.createElement('div');
     element.className = 'plot';
+    element.style.width = plotWidth + 'px';  // a long heading wraps
     const heading = document.createElement('div');
     const svg = document.createElementNS(svgNamespace, 'svg');
     svg.setAttribute('width', String(plotWidth));
