@@ -196,7 +196,7 @@ class EveryScene : public ::testing::TestWithParam<std::string> {};
 // trace of the same run puts it (its centre within 1e-4 m, its orientation within 1e-4, either sign
 // of the quaternion), and where the video's camera shows it (its centre within 2 px of the
 // renderer's projection of the traced centre); no error; WebGL; nothing fetched; under 2 MB (the
-// 1001-body heap: 25 MB; the two 231-box pyramids of ex3_stacks, one falling all the while: 4 MB).
+// 1001-body heap: 25 MB; the two 231-box pyramids of ex3_stacks, one falling all the while: 3 MB).
 // And what the video's film shows at those moments: the marks (rods, ropes, velocity arrows; at
 // real speed also contact dots and arrows), each where the film puts it within 1e-3 m, in its
 // colour; each typeset equation, the same SVG in the same corner of the same pane; and each plot's
@@ -220,7 +220,7 @@ TEST_P(EveryScene, ThePageDrawsEachBodyWhereTheTraceAndTheVideosCameraPutIt) {
   ASSERT_TRUE(exported.succeeded()) << exported.describe();
 
   const std::string html = contents(page);
-  EXPECT_LT(html.size(), name == "ex2_many_bodies" ? 25u << 20 : name == "ex3_stacks" ? 4u << 20 : 2u << 20) << "bytes";
+  EXPECT_LT(html.size(), name == "ex2_many_bodies" ? 25u << 20 : name == "ex3_stacks" ? 3u << 20 : 2u << 20) << "bytes";
   for (const char* fetch : {"<script src", "<link", "<img", "import("})
     EXPECT_EQ(html.find(fetch), std::string::npos) << "the page fetches nothing: " << fetch;
   // and may not: its policy allows no source but its own inline script and style, and images it
