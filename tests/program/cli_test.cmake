@@ -17,12 +17,15 @@ if(NOT EXISTS ${WORK}/bounce.mp4)
   message(FATAL_ERROR "render exited 0 but wrote no ${WORK}/bounce.mp4")
 endif()
 
-# An output that cannot be written fails loudly and leaves nothing under the final name.
-expect_exit(3 ${IMPULSE} -q render assets/scenes/bounce.toml -o ${WORK}/missing-dir/bounce.mp4)
-if(EXISTS ${WORK}/missing-dir)
-  message(FATAL_ERROR "a failed render left a file behind")
+# An output that cannot be written (its folder would be inside a file) fails loudly and leaves
+# nothing under the final name.
+file(WRITE ${WORK}/a-file "not a folder\n")
+expect_exit(3 ${IMPULSE} -q render assets/scenes/bounce.toml -o ${WORK}/a-file/bounce.mp4)
+file(READ ${WORK}/a-file kept)
+if(NOT kept STREQUAL "not a folder\n")
+  message(FATAL_ERROR "a failed render changed the file in its way")
 endif()
-if(NOT last_error MATCHES "missing-dir")
+if(NOT last_error MATCHES "cannot make the folder .*a-file")
   message(FATAL_ERROR "the error does not name the path: ${last_error}")
 endif()
 
