@@ -77,6 +77,7 @@ const view = await browser.newPage({ viewport: { width: 1000, height: 700 } });
 const complaints = [];
 view.on('pageerror', (error) => complaints.push(error.message));
 await view.goto(pathToFileURL(page).href);
+await view.waitForFunction(() => window.impulsePage !== undefined);  // the viewer and the run are unpacked first
 const shown = () => view.evaluate(() => {
   const panel = document.getElementById('panel');
   return panel.hidden ? null : { ...panel.dataset, text: panel.textContent };

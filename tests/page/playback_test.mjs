@@ -28,6 +28,7 @@ check(impacts.length > 0, 'the scene has impacts: ' + impacts.map((t) => t.toFix
 const browser = await launchChromium(nodeModules);
 const view = await browser.newPage({ viewport: { width: 1000, height: 700 } });
 await view.goto(pathToFileURL(page).href);
+await view.waitForFunction(() => window.impulsePage !== undefined);  // the viewer and the run are unpacked first
 const fps = await view.evaluate(() => window.impulsePage.run.fps);
 const nearest = (t) => Math.min(...impacts.map((impact) => Math.abs(t - impact)));
 let inside = 0, outside = 0;
