@@ -46,6 +46,12 @@ py::list check_list(const std::vector<demos::CheckResult>& results);
 // Sets a Python function of listing 1's arguments as the world's response (workshop method).
 void set_python_response(demos::Scene& scene, const py::object& function);
 
+// Every pane the first's camera, video, playback and duration (as `impulse compare` does).
+void share_first(std::vector<demos::Scene>& scenes);
+// The scene's panes as `impulse render` and `impulse export` show them: its [compare]'s (each with
+// the Python response, if any), `labels` theirs; or the scene alone.
+std::vector<demos::Scene> scene_panes(const CoreScene& core, std::vector<std::string>& labels);
+
 void add_scene_bindings(py::module_& module);
 void add_trace_bindings(py::module_& module);
 void add_film_bindings(py::module_& module);

@@ -59,7 +59,8 @@ std::vector<std::vector<demos::CheckResult>> render(std::vector<demos::Scene>& s
   return demos::render_panes(panes, options);
 }
 
-// Every pane the first's camera, video, playback and duration (as `impulse compare` does).
+}  // namespace
+
 void share_first(std::vector<demos::Scene>& scenes) {
   for (demos::Scene& scene : scenes) {
     scene.camera = scenes.front().camera;
@@ -70,25 +71,26 @@ void share_first(std::vector<demos::Scene>& scenes) {
   }
 }
 
-}  // namespace
+std::vector<demos::Scene> scene_panes(const CoreScene& core, std::vector<std::string>& labels) {
+  labels = {""};
+  if (core.scene.compare.values.empty()) return {core.scene};
+  std::vector<demos::Scene> scenes = demos::load_variants(*core.file, core.settings, core.scene.compare);
+  if (!core.response.is_none())
+    for (demos::Scene& scene : scenes) set_python_response(scene, core.response);
+  labels = core.scene.compare.labels;
+  share_first(scenes);
+  return scenes;
+}
 
 void add_film_bindings(py::module_& module) {
   module.def(
       "render",
       [](const CoreScene& core, const std::string& path, const std::string& quality, py::object progress) {
         demos::RenderOptions options = video_options(path);
-        std::vector<demos::Scene> scenes{core.scene};
-        std::vector<std::string> labels{""};
-        demos::VideoOverrides overrides = overrides_for(quality);
-        overrides.apply(scenes.front(), options);
-        if (!core.scene.compare.values.empty()) {  // the file's [compare]: its panes, as `impulse render` shows them
-          scenes = demos::load_variants(*core.file, core.settings, core.scene.compare);
-          if (!core.response.is_none())
-            for (demos::Scene& scene : scenes) set_python_response(scene, core.response);
-          labels = core.scene.compare.labels;
-          overrides.apply(scenes.front(), options);
-          share_first(scenes);
-        }
+        std::vector<std::string> labels;
+        std::vector<demos::Scene> scenes = scene_panes(core, labels);  // the file's [compare]'s, as `impulse render` shows them
+        overrides_for(quality).apply(scenes.front(), options);
+        share_first(scenes);
         const auto checks = render(scenes, labels, options, std::move(progress));
         return written(options, checks);
       },

@@ -30,6 +30,17 @@ def test_view_writes_the_page_the_program_exports_and_shows_it_inline(tmp_path, 
     assert sorted(os.listdir(tmp_path)) == ["bounce.html", "exported.html"]
 
 
+def test_a_comparisons_page_shows_its_panes_as_export_does(tmp_path, program):
+    scene = impulse.load("assets/scenes/ex1_friction.toml")
+    page = scene.view(tmp_path / "friction.html")
+    subprocess.run([program, "-q", "export", "assets/scenes/ex1_friction.toml", "-o", str(tmp_path / "exported.html")], check=True)
+    with open(page.path, "rb") as mine, open(tmp_path / "exported.html", "rb") as exported:
+        assert mine.read() == exported.read()
+    with open(page.path, encoding="utf-8") as file:
+        run = page_run(file.read())
+    assert [pane["label"] for pane in run["panes"]] == ["tangential impulses off", "on: friction \u03bc = 0.5"]
+
+
 def page_run(text):
     """The run in a page: JSON, gzipped, in base64."""
     packed = re.search(r'<script id="impulse-run" type="application/gzip;base64">([^<]*)</script>', text)
