@@ -55,9 +55,17 @@ if(size LESS 1000 OR NOT head MATCHES "^........66747970$")
 endif()
 # The page of the installed half-pipe: its mesh file found beside the installed scenes.
 run(${impulse} -q export ${prefix}/share/impulse/scenes/s5_half_pipe.toml -o pages/half_pipe.html)
-file(READ ${elsewhere}/pages/half_pipe.html page)
-if(NOT page MATCHES "\"shape\":\"mesh\"" OR NOT page MATCHES "WebGLRenderer")
-  message(FATAL_ERROR "pages/half_pipe.html holds no mesh or no viewer")
+# Its run and viewer are packed (gzip, base64): unpacked here as the page unpacks them.
+execute_process(COMMAND python3 -c [=[
+import base64, gzip, re, sys
+page = open(sys.argv[1], encoding="utf-8").read()
+def unpacked(name):
+    found = re.search('<script id="' + name + '" type="application/gzip;base64">([^<]*)</script>', page)
+    return gzip.decompress(base64.b64decode(found.group(1))).decode() if found else ""
+print("mesh" if '"shape":"mesh"' in unpacked("impulse-run") else "no mesh", "viewer" if "WebGLRenderer" in unpacked("impulse-viewer") else "no viewer")
+]=] ${elsewhere}/pages/half_pipe.html OUTPUT_VARIABLE unpacked RESULT_VARIABLE unpacking)
+if(NOT unpacking EQUAL 0 OR NOT unpacked MATCHES "^mesh viewer")
+  message(FATAL_ERROR "pages/half_pipe.html holds no mesh or no viewer: ${unpacked}")
 endif()
 # The gallery of it, from the installed catalogue's scene files.
 run(${impulse} gallery -o videos)

@@ -37,7 +37,8 @@ def main(path):
     assert 'sandbox="allow-scripts"' in pages[0] and "impulse-run" in pages[0]
     packed = re.search(r'<script id="impulse-run" type="application/gzip;base64">([^<]*)</script>', html.unescape(pages[0]))
     run = json.loads(gzip.decompress(base64.b64decode(packed.group(1))))
-    assert "sliding box" in [body["name"] for body in run["bodies"]], "the page holds the scene's bodies"
+    panes = run.get("panes", [run])  # the file's [compare]: its panes, as export shows them
+    assert all("sliding box" in [body["name"] for body in pane["bodies"]] for pane in panes), "the page holds the scene's bodies"
     assert "<impulse.Trace of ex1_friction" in text
     match = re.search(r"after [\d.]+ s: ([\d.]+) m/s with friction, ([\d.]+) m/s without", text)
     assert match and float(match.group(1)) < float(match.group(2)), "friction must slow the box: " + str(match)

@@ -28,13 +28,13 @@ const seen = await frame.evaluate(() => {
     const context = copy.getContext('2d');
     context.drawImage(canvas, 0, 0);
     const pixels = context.getImageData(0, 0, copy.width, copy.height).data;
-    const body = p.run.bodies.find((b) => b.name === 'sliding box');
+    const body = p.panes[0].bodies.find((b) => b.name === 'sliding box');
     const want = body.colour.map((c) => 255 * c);
     let near = 0;
     for (let at = 0; at < pixels.length; at += 4)
       if (Math.abs(pixels[at] - want[0]) + Math.abs(pixels[at + 1] - want[1]) + Math.abs(pixels[at + 2] - want[2]) < 90) near += 1;
     done({ near, width: copy.width, height: copy.height, errors: p.errors.slice(), frames: p.frameCount,
-           bodies: p.run.bodies.map((b) => b.name) });
+           bodies: p.panes[0].bodies.map((b) => b.name) });
   })));
 });
 await browser.close();
