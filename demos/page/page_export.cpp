@@ -418,14 +418,10 @@ void write_plots(const std::vector<PaneRecord>& runs, const TakeSummary& shared,
     text(out, plot.title);
     out << ",\"unit\":";
     text(out, plot.unit);
-    out << ",\"x_start\":";
-    number(out, plot.x_start);
-    out << ",\"x_end\":";
-    number(out, plot.x_end);
-    out << ",\"y_min\":";
-    number(out, plot.y_min);
-    out << ",\"y_max\":";
-    number(out, plot.y_max);
+    for (const auto& [name, value] : {std::pair{"x_start", plot.x_start}, {"x_end", plot.x_end}, {"y_min", plot.y_min}, {"y_max", plot.y_max}}) {
+      out << ",\"" << name << "\":";
+      number(out, value);
+    }
     out << ",\"series\":[";
     for (size_t c = 0; c < plot.series.size(); ++c) {
       const render::PlotSeries& series = plot.series[c];

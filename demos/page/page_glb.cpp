@@ -270,14 +270,21 @@ class GlbBuilder {
     return int(model_.meshes.size() - 1);
   }
 
-  // A flat colour: unlit where the viewer knows KHR_materials_unlit, else matte.
-  int unlit(const render::Colour& colour) {
+  // A material of an sRGB colour (glTF's factors are linear), named by it, not metal.
+  template <class C>
+  static tinygltf::Material coloured(const char* kind, const C& colour) {
     tinygltf::Material material;
     char name[64];
-    std::snprintf(name, sizeof name, "unlit sRGB %.3f %.3f %.3f", colour.r, colour.g, colour.b);
+    std::snprintf(name, sizeof name, "%s %.3f %.3f %.3f", kind, colour.r, colour.g, colour.b);
     material.name = name;
     material.pbrMetallicRoughness.baseColorFactor = {linear(colour.r), linear(colour.g), linear(colour.b), 1.0};
     material.pbrMetallicRoughness.metallicFactor = 0.0;
+    return material;
+  }
+
+  // A flat colour: unlit where the viewer knows KHR_materials_unlit, else matte.
+  int unlit(const render::Colour& colour) {
+    tinygltf::Material material = coloured("unlit sRGB", colour);
     material.extensions["KHR_materials_unlit"] = tinygltf::Value(tinygltf::Value::Object());
     if (std::find(model_.extensionsUsed.begin(), model_.extensionsUsed.end(), "KHR_materials_unlit") == model_.extensionsUsed.end())
       model_.extensionsUsed.push_back("KHR_materials_unlit");
@@ -289,12 +296,7 @@ class GlbBuilder {
   int material(const Colour& colour, bool double_sided) {
     const auto key = std::make_tuple(colour.r, colour.g, colour.b, double_sided);
     if (const auto found = materials_.find(key); found != materials_.end()) return found->second;
-    tinygltf::Material material;
-    char name[64];
-    std::snprintf(name, sizeof name, "sRGB %.3f %.3f %.3f", colour.r, colour.g, colour.b);
-    material.name = name;
-    material.pbrMetallicRoughness.baseColorFactor = {linear(colour.r), linear(colour.g), linear(colour.b), 1.0};
-    material.pbrMetallicRoughness.metallicFactor = 0.0;
+    tinygltf::Material material = coloured("sRGB", colour);
     material.pbrMetallicRoughness.roughnessFactor = 0.6;  // as the page's viewer draws the bodies
     material.doubleSided = double_sided;
     model_.materials.push_back(std::move(material));
