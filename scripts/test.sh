@@ -50,10 +50,11 @@ tsan_tests='^(ThreadTeam\.|SweepSchedule\.|FramePipeline\.|Determinism\.|Heap\.T
 # temporary-file code under ASan; and the Slurm array (47 s), whose shards run the class grading
 # that ClassGrade.* runs under ASan; and the layout check of the 1001-body scene (118 s, 27 s in
 # Release): catalogue_checks_ex2_many_bodies simulates that scene under ASan, and the layout code
-# runs on every other scene. And the pages and glTF files of the catalogue's scenes but two (the
-# balls' and the half-pipe's: spheres, planes, cylinders and a mesh): the export's code is the same
-# for every scene, and the Release run checks them all.
-asan_exclude='^(Catalogue/EveryScene\.(ThePageDrawsEachBodyWhereTheTraceAndTheVideosCameraPutIt|TheGlbValidatesAndPutsEachBodyWhereTheTraceDoes)/(ex|s[1-4]|s5_(boxes|hulls|rolling|shapes)|s6)|Stack\.(LargePyramidOf5050BoxesStandsFiveHundredSteps|PyramidOf210BoxesStandsSixtySeconds)|Heap/LongRun\.|Heap\.(Boxes|Spheres)ComeToRestWithSleepingOff|OutputConcurrency\.TwoOrFour|SlurmArray\.|Catalogue/EveryScene\.NothingCoversAnything/ex2_many_bodies)'
+# runs on every other scene. And the pages and glTF files of the catalogue's scenes but three (the
+# balls', the half-pipe's: spheres, planes, cylinders and a mesh; and s3_restitution's: three
+# panes, equations, plots): the export's code is the same for every scene, and the Release run
+# checks them all.
+asan_exclude='^(Catalogue/EveryScene\.(ThePageDrawsEachBodyWhereTheTraceAndTheVideosCameraPutIt|TheGlbValidatesAndPutsEachBodyWhereTheTraceDoes)/(ex|s[124]|s3_(billiard|restitution_erratum)|s5_(boxes|hulls|rolling|shapes)|s6)|Stack\.(LargePyramidOf5050BoxesStandsFiveHundredSteps|PyramidOf210BoxesStandsSixtySeconds)|Heap/LongRun\.|Heap\.(Boxes|Spheres)ComeToRestWithSleepingOff|OutputConcurrency\.TwoOrFour|SlurmArray\.|Catalogue/EveryScene\.NothingCoversAnything/ex2_many_bodies)'
 
 # Sanitizer builds use clang: GCC 12 compiles the solver with ASan+UBSan and -g 7x slower (69 s vs
 # 10 s for physics/contact_solver.cpp: its variable tracking), and libFuzzer needs clang anyway.
