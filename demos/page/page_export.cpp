@@ -275,6 +275,7 @@ PaneRecord record(const Pane& pane) {
   FrameSample sample;
   ChangeWriter<7> poses(bodies);
   ChangeWriter<6> motions(bodies);
+  const int followed = find_body(scene, scene.camera_motion.follow);  // -1: none
   for (long k = 0; k < frames; ++k) {
     const double time = double(k) / scene.video.fps;
     while (!take.finished() && take.time() < time - 1e-9) take.step();
@@ -299,7 +300,7 @@ PaneRecord record(const Pane& pane) {
     run.motion += ']';
     if (marked) run.marked.push_back({sample.poses, sample.velocities, sample.contacts});
     run.impacts.push_back(sample.impact);
-    if (const int body = find_body(scene, scene.camera_motion.follow); body >= 0) run.followed.push_back(sample.poses[size_t(body)].position);
+    if (followed >= 0) run.followed.push_back(sample.poses[size_t(followed)].position);
   }
   while (!take.finished()) take.step();  // to the end, as the film: the summary (scales, impacts, extent) is the whole run's
   return run;
