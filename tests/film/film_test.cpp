@@ -76,6 +76,30 @@ TEST(Film, PanesShareTheirMomentsAndSlowDownAroundAnyPanesImpact) {
 
 // Each pane's own captions (CaptionCue::own, as scene_compare.h marks them) are given its index;
 // the frame's are the first pane's, once.
+// What a comparison's panes share (their arrows and plots drawn to one scale, one camera fitted to
+// all): each largest value of any pane, every pane's moving extent, every impact in order.
+TEST(Film, PanesShareTheLargestOfEachAndEveryImpact) {
+  demos::TakeSummary a, b;
+  a.impact_times = {0.5, 1.2};
+  b.impact_times = {0.3, 0.9};
+  a.largest_impulse = 2, b.largest_impulse = 5;
+  a.impulse_to_fit = 1.5, b.impulse_to_fit = 0.5;
+  a.largest_speed = 3, b.largest_speed = 1;
+  a.plot_maxima = {4, 1}, b.plot_maxima = {2};
+  b.someone_sleeps = true;
+  a.moving_extent.extend(Eigen::Vector3d(0, 0, 0)).extend(Eigen::Vector3d(1, 1, 1));
+  b.moving_extent.extend(Eigen::Vector3d(-2, 0.5, 0)).extend(Eigen::Vector3d(0, 3, 0.5));
+  const demos::TakeSummary shared = demos::shared_summary({&a, &b});
+  EXPECT_EQ(shared.impact_times, (std::vector<double>{0.3, 0.5, 0.9, 1.2}));
+  EXPECT_EQ(shared.largest_impulse, 5);
+  EXPECT_EQ(shared.impulse_to_fit, 1.5);
+  EXPECT_EQ(shared.largest_speed, 3);
+  EXPECT_EQ(shared.plot_maxima, (std::vector<double>{4, 1}));
+  EXPECT_TRUE(shared.someone_sleeps);
+  EXPECT_EQ(shared.moving_extent.min(), Eigen::Vector3d(-2, 0, 0));
+  EXPECT_EQ(shared.moving_extent.max(), Eigen::Vector3d(1, 3, 1));
+}
+
 TEST(Film, EachPanesOwnCaptionIsNamedForItsPaneAndTheFramesComeOnce) {
   const auto dir = testing::scratch("film_compare_test", "captions");
   demos::Scene low = testing::scene_from(dir, drop(0.5));
