@@ -258,13 +258,9 @@ void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const 
     m.tangent1 = across(m.tangent1, g.normal);
     m.tangent2 = g.normal.cross(m.tangent1);
     m.normal = g.normal;
-    for (int i = 0; i < m.count; ++i) {
-      points[i].normal = m.normal;
-      points[i].tangent1 = m.tangent1;
-      points[i].tangent2 = m.tangent2;
-      // Neither turns (spheres): the solver's separation is (dp_a - dp_b + anchor_a - anchor_b) . n + adjusted.
+    // Neither turns (spheres): the solver's separation is (dp_a - dp_b + anchor_a - anchor_b) . n + adjusted.
+    for (int i = 0; i < m.count; ++i)
       rows[i].adjusted_separation[l] = separation[i] - (sa.dp - sb.dp + points[i].anchor_a - points[i].anchor_b).dot(m.normal);
-    }
     set_lane(block.normal, l, m.normal);
     set_lane(block.tangent1, l, m.tangent1);
     set_lane(block.tangent2, l, m.tangent2);

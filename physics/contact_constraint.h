@@ -30,25 +30,23 @@ constexpr Real kMaxHertzPerSubstepRate = Real(1) / 6;
 
 constexpr int kMaxManifoldPoints = 4;  // the collision routines reduce every pair to four
 
-// One contact point.
-struct alignas(64) ContactConstraint {  // a cache line of its own at each end: threads build neighbours
+// One contact point. What its manifold's points share (the normal, the tangents, the materials) is
+// the manifold's alone.
+struct ContactConstraint {
   int a = -1, b = -1;                  // slots
   uint32_t feature = 0;                // the contact's, to find it again next step
-  Vec3 normal, tangent1, tangent2;
   Vec3 anchor_a, anchor_b;             // contact point relative to each centre, at step start
   Real adjusted_separation = 0;        // separation - dot(anchor_a - anchor_b, normal)
   Real normal_mass = 0;                // 1 / eq. 13's denominator, at the step's start
-  Real friction = 0, restitution = 0;
   // The impulses. After prepare(): the warm start; during the sub-steps the packed lanes hold the
   // current ones (contact_lanes.h); after store_impulses(): the last sub-step's, and the sums over
   // the whole step for the records.
   Real normal_impulse = 0;
   Real total_normal_impulse = 0, total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
-  Real normal_acceleration = 0;        // of A relative to B along the normal, from gravity
 };
 
 // The points between one pair of bodies, and their shared friction.
-struct alignas(64) ManifoldConstraint {
+struct ManifoldConstraint {
   int a = -1, b = -1;                  // slots
   int first = 0, count = 0;            // its points in the constraint list
   // Its points', which share them (one pair, one normal).

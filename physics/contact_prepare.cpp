@@ -21,39 +21,15 @@ uint64_t pair_key(int a, int b) {
   return (uint64_t(uint32_t(std::min(a, b))) << 33) | (uint64_t(uint32_t(std::max(a, b))) << 1) | uint64_t(a > b);
 }
 
-// One contact point's constraint, without its warm start. What the points of a manifold share (one
-// pair, one normal) is taken from its first point's, once built.
-ContactConstraint make_constraint(const Contact& contact, const std::vector<Body>& bodies, const SolverBodies& solver_bodies,
-                                  const std::vector<int>& slots, const ContactSolverSettings& settings,
-                                  const std::vector<PairMaterial>& pair_materials, const Vec3& gravity, const ContactConstraint* first) {
-  const Body& body_a = bodies[contact.body_a];
-  const Body& body_b = bodies[contact.body_b];
+// One contact point's constraint, without its warm start.
+ContactConstraint make_constraint(const Contact& contact, const std::vector<Body>& bodies, const std::vector<int>& slots) {
   ContactConstraint c;
   c.a = slots[contact.body_a];
   c.b = slots[contact.body_b];
   c.feature = contact.feature;
-  const BodyState& sa = solver_bodies.states[c.a];
-  const BodyState& sb = solver_bodies.states[c.b];
-  c.normal = contact.normal;
-  if (first) {
-    c.tangent1 = first->tangent1;
-    c.tangent2 = first->tangent2;
-  } else {
-    tangent_basis(c.normal, c.tangent1, c.tangent2);
-  }
-  c.anchor_a = contact.point - body_a.position;
-  c.anchor_b = contact.point - body_b.position;
-  c.adjusted_separation = contact.separation - (c.anchor_a - c.anchor_b).dot(c.normal);
-  if (first) {
-    c.friction = first->friction;
-    c.restitution = first->restitution;
-    c.normal_acceleration = first->normal_acceleration;
-    return c;
-  }
-  const ContactMaterial material = contact_material(body_a.material, body_b.material, pair_materials);
-  c.friction = settings.friction ? material.friction : 0;
-  c.restitution = material.restitution;
-  c.normal_acceleration = ((sa.inv_mass > 0 ? gravity : Vec3::Zero()) - (sb.inv_mass > 0 ? gravity : Vec3::Zero())).dot(c.normal);
+  c.anchor_a = contact.point - bodies[contact.body_a].position;
+  c.anchor_b = contact.point - bodies[contact.body_b].position;
+  c.adjusted_separation = contact.separation - (c.anchor_a - c.anchor_b).dot(contact.normal);
   return c;
 }
 
@@ -146,14 +122,14 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   find_previous_pairs();
   // Each thread builds the manifolds it sweeps, from the states and bodies it loaded.
   schedule_.run(*team_, [&](int thread) {
-    schedule_.place_share(thread, [&](int place) { prepare_manifold(place, contacts, bodies, solver_bodies, gravity, warm_scale); });
+    schedule_.place_share(thread, [&](int place) { prepare_manifold(place, contacts, bodies, solver_bodies, warm_scale); });
   });
 }
 
 // The manifold at `place`: its points' constraints, warm started from last step's impulses of the
 // same pair and feature, its shared rows, and its lane.
 void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
-                                     const SolverBodies& solver_bodies, const Vec3& gravity, Real warm_scale) {
+                                     const SolverBodies& solver_bodies, Real warm_scale) {
   const std::vector<int>& slots = schedule_.slots();
   const int manifold = schedule_.order()[place];
   const auto [first, end] = groups_[manifold];
@@ -163,13 +139,21 @@ void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& cont
   m.b = slots[contacts[first].body_b];
   m.first = first_of_place_[place];
   m.count = end - first;
+  // What the points share: the pair's normal (the contacts of a manifold have one), its tangents, the materials.
+  const Body& body_a = bodies[contacts[first].body_a];
+  const Body& body_b = bodies[contacts[first].body_b];
+  m.normal = contacts[first].normal;
+  tangent_basis(m.normal, m.tangent1, m.tangent2);
+  const ContactMaterial material = contact_material(body_a.material, body_b.material, *pair_materials_);
+  m.friction = settings_.friction ? material.friction : 0;
+  m.restitution = material.restitution;
   const auto [same_pair, other_pair] = previous_range_[manifold];
   // The friction's warm start: last step's manifold of the pair that shares a point with this one
   // (a mesh's pair has one per triangle normal), else its last.
   int friction_from = other_pair - 1;
   for (int i = 0; i < m.count; ++i) {
     ContactConstraint& c = constraints_[m.first + i];
-    c = make_constraint(contacts[first + i], bodies, solver_bodies, slots, settings_, *pair_materials_, gravity, i > 0 ? &constraints_[m.first] : nullptr);
+    c = make_constraint(contacts[first + i], bodies, slots);
     for (int previous = same_pair; previous != other_pair; ++previous) {
       const ManifoldWarm& pm = previous_warm_manifolds_[previous_pairs_[previous].manifold];
       for (int j = 0; j < pm.count; ++j)
@@ -180,7 +164,7 @@ void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& cont
     }
   }
   ManifoldLanes& block = begin_lanes(place, m);
-  prepare_shared_rows(m, block, lane_of_place_[place].lane, bodies[contacts[first].body_a], bodies[contacts[first].body_b], solver_bodies);
+  prepare_shared_rows(m, block, lane_of_place_[place].lane, body_a, body_b, solver_bodies);
   if (same_pair != other_pair) {
     warm_start_friction(m, previous_warm_manifolds_[previous_pairs_[friction_from].manifold]);
     m.tangent_impulse1 *= warm_scale;
@@ -263,11 +247,6 @@ void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& bl
   const BodyState& sb = solver_bodies.states[m.b];
   ContactConstraint* points = &constraints_[m.first];
   const ContactConstraint& first = points[0];
-  m.normal = first.normal;
-  m.tangent1 = first.tangent1;
-  m.tangent2 = first.tangent2;
-  m.friction = first.friction;
-  m.restitution = first.restitution;
   block.can_bounce = block.can_bounce || m.restitution > 0;
   Vec3 centre = Vec3::Zero(), ra[kMaxManifoldPoints], rb[kMaxManifoldPoints];
   for (int i = 0; i < m.count; ++i) {
@@ -292,7 +271,7 @@ void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& bl
   // to 2/3 mu N a (uniform pressure). Without it a sphere spinning about the normal spins for ever.
   if (m.count == 1) {
     const Real k = (m.radius_a > 0 ? 1 / m.radius_a : 0) + (m.radius_b > 0 ? 1 / m.radius_b : 0);
-    const Real depth = std::max(-(first.adjusted_separation + (first.anchor_a - first.anchor_b).dot(first.normal)), Real(0));
+    const Real depth = std::max(-(first.adjusted_separation + (first.anchor_a - first.anchor_b).dot(m.normal)), Real(0));
     if (k > 0) twist_radius = Real(2) / 3 * std::sqrt(2 * depth / k);
     if (k > 0) block.rolling_radius[l] = settings_.rolling_resistance / k;
   }

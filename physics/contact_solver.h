@@ -79,6 +79,8 @@ class ContactSolver {
   const std::vector<ContactConstraint>& constraints() const { return constraints_; }
   const std::vector<ManifoldConstraint>& manifolds() const { return manifolds_; }
   const ContactConstraint& constraint_of(int contact) const { return constraints_[constraint_of_contact_[contact]]; }
+  // Its manifold: the normal and tangents of its impulses (a bounce's normal, for one that bounced).
+  const ManifoldConstraint& manifold_of(int contact) const { return manifolds_[manifold_of_constraint(constraint_of_contact_[contact])]; }
   // Where the contact's impulses acted this step, relative to the point the narrow phase found at
   // its start: where the surfaces met, for a point that bounced; else nothing.
   Vec3 impact_shift(int contact) const {
@@ -103,7 +105,7 @@ class ContactSolver {
   struct ManifoldWarm;
   void find_previous_pairs();
   void prepare_manifold(int place, const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
-                        const SolverBodies& solver_bodies, const Vec3& gravity, Real warm_scale);
+                        const SolverBodies& solver_bodies, Real warm_scale);
   void prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& block, int lane, const Body& body_a, const Body& body_b,
                            const SolverBodies& solver_bodies);
   static void warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous);

@@ -49,7 +49,7 @@ void ContactSolver::store_impulses() {
     warm_manifolds_[place] = {m.first, m.count, m.tangent_impulse1 * m.tangent1 + m.tangent_impulse2 * m.tangent2, m.twist_impulse};
     for (int i = 0; i < m.count; ++i) warm_points_[m.first + i] = {constraints_[m.first + i].feature, constraints_[m.first + i].normal_impulse};
     ManifoldLoad& load = loads_[place];
-    load = {m.a, m.b, 0, 0, constraints_[m.first].normal};
+    load = {m.a, m.b, 0, 0, m.normal};
     for (int i = 0; i < m.count; ++i) {
       load.impulse += constraints_[m.first + i].total_normal_impulse / std::max(substeps_, 1);
       load.normal_mass += constraints_[m.first + i].normal_mass;

@@ -285,10 +285,11 @@ void World::fill_record() const {
     } else {
       // A point that bounced: where the surfaces met, and the normal then (contact_bounce.cpp).
       const ContactConstraint& c = contact_solver_.constraint_of(int(i));
+      const ManifoldConstraint& m = contact_solver_.manifold_of(int(i));
       normal_impulse = c.total_normal_impulse;
-      friction_impulse = c.total_tangent_impulse1 * c.tangent1 + c.total_tangent_impulse2 * c.tangent2;
+      friction_impulse = c.total_tangent_impulse1 * m.tangent1 + c.total_tangent_impulse2 * m.tangent2;
       point += contact_solver_.impact_shift(int(i));
-      normal = c.normal;
+      normal = m.normal;
     }
     if (contact.separation > settings_.linear_slop && normal_impulse == 0) continue;
     record_.contacts.push_back({contact.body_a, contact.body_b, point, normal, contact.penetration(), normal_impulse, friction_impulse});

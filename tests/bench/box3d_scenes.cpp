@@ -1,7 +1,7 @@
 // The benchmark's scenes in Box3D (the second peer, ../shared/peers/box3d, see its PEER.md):
 // b3DefaultWorldDef() with our gravity and sleeping as the run asks, b3World_Step(world, 1/60, 4)
 // (4 sub-steps is Box3D's default; --box3d-substeps N sets another), and as many workers as impulse has threads
-// (ThreadTeam::default_size()), run by Box3D's own scheduler: with workerCount > 1 and no task
+// (ThreadTeam::default_size(); one in --duel), run by Box3D's own scheduler: with workerCount > 1 and no task
 // callbacks, b3CreateWorld starts workerCount - 1 threads and the stepping thread is worker 0,
 // as impulse's team counts the caller. Only this file includes Box3D; it is compiled only when
 // CMake found the peer (IMPULSE_BENCH_BOX3D).
@@ -19,8 +19,11 @@
 namespace impulse::bench {
 
 int box3d_substeps = 4;
+int box3d_workers = 0;
 
 namespace {
+
+int workers() { return box3d_workers > 0 ? box3d_workers : physics::ThreadTeam::default_size(); }
 
 class Box3DEngine {
  public:
@@ -28,7 +31,7 @@ class Box3DEngine {
     b3WorldDef def = b3DefaultWorldDef();
     def.gravity = {0, -9.81f, 0};
     def.enableSleep = sleep;
-    def.workerCount = uint32_t(physics::ThreadTeam::default_size());
+    def.workerCount = uint32_t(workers());
     world_ = b3CreateWorld(&def);
     for (const BodySpec& spec : scene.bodies) {
       b3BodyDef body_def = b3DefaultBodyDef();
@@ -95,8 +98,8 @@ void run_box3d(const Scene& scene, const Run& run, RunResult& out) {
 std::string box3d_description() {
   const b3Version v = b3GetVersion();
   return "Box3D " + std::to_string(v.major) + "." + std::to_string(v.minor) + "." + std::to_string(v.revision) + " (" +
-         std::to_string(box3d_substeps) + " sub-steps, " + std::to_string(physics::ThreadTeam::default_size()) +
-         " workers on its own scheduler, " +
+         std::to_string(box3d_substeps) + " sub-steps, " + std::to_string(workers()) +
+         (workers() == 1 ? " worker, " : " workers on its own scheduler, ") +
 #ifdef BOX3D_DOUBLE_PRECISION
          "double"
 #else

@@ -9,6 +9,7 @@
 //   physics_bench --threads N     impulse's world.threads (default 0: one per core, shared while faster)
 //   physics_bench --impulse-only  impulse alone, no peers (A/B runs of two builds of impulse)
 //   physics_bench --box3d-substeps N  Box3D with N sub-steps a step (default 4, its own)
+//   physics_bench --duel [--rounds N]  one thread each against Box3D, interleaved (issue 44's goals)
 #include "tests/bench/core_latency.h"
 #include "tests/bench/physics_scenes.h"
 
@@ -317,23 +318,144 @@ void print_growth(const std::vector<Outcome>& outcomes) {
   }
 }
 
+// --duel: impulse and Box3D on one thread each (world.threads 1; workerCount 1), sleeping off, run
+// after one another scene by scene, `rounds` times (impulse first in odd rounds, Box3D first in
+// even ones), each engine's fastest median kept: the figure that holds on a host whose speed swings
+// between minutes. Then Bullet once on the 5050 pyramid, for its memory. Prints issue 44's goals.
+struct DuelScene {
+  const char* scene;
+  int steps;
+  double most_ratio;  // impulse's median over Box3D's at most this
+};
+constexpr DuelScene kDuelScenes[] = {{"pyramid", 3600, 1.0}, {"boxes", 1200, 1.0}, {"spheres", 1200, 1.0}, {"large-pyramid", 500, 1.5}};
+constexpr double kMemoryFinal = 40;    // MiB on the 5050 pyramid, the second bar (the first: Bullet's)
+constexpr double kMostGrowth = 1.05;   // impulse's time from the 210 to the 5050 pyramid: at most n^this
+
+struct DuelBest {
+  Measured m;
+  bool have = false;
+  double most_peak = 0;  // the largest peak of its rounds
+  void keep(const Measured& run) {
+    most_peak = std::max(most_peak, run.peak_mib);
+    if (run.result.ok && (!have || run.result.median_ms < m.result.median_ms)) m = run, have = true;
+  }
+};
+
+int duel(int rounds, bool quick, const std::set<std::string>& only) {
+  if constexpr (!kHaveBox3D) {
+    std::fprintf(stderr, "physics_bench --duel: this build has no Box3D (configure with -DIMPULSE_BOX3D_DIR=../shared/peers/box3d)\n");
+    return 2;
+  }
+  impulse_threads = 1;
+  box3d_workers = 1;
+  std::vector<DuelScene> scenes;
+  for (DuelScene d : kDuelScenes) {
+    if (!only.empty() && !only.count(d.scene)) continue;
+    if (quick) d.steps = std::min(d.steps, std::string(d.scene) == "large-pyramid" ? 5 : 30);
+    scenes.push_back(d);
+  }
+  std::printf("physics_bench --duel%s: impulse and Box3D on one thread each, sleeping off, %d interleaved rounds, the fastest median kept\n",
+              quick ? " --quick" : "", rounds);
+  std::printf("date %s; CPU %s; load average %s at start; cores' round trip %.0f ns\n%s;\n%s; build %s, %s\n\n", now_utc().c_str(),
+              first_line_of("/proc/cpuinfo", "model name").c_str(), load_average().c_str(), core_round_trip_ns(),
+              impulse_description().c_str(), box3d_description().c_str(), IMPULSE_BUILD_TYPE, __VERSION__);
+  std::vector<DuelBest> best_impulse(scenes.size()), best_box3d(scenes.size());
+  auto run_one = [&](const DuelScene& d, EngineId e) {
+    const Run run{d.scene, d.steps, false};
+    return in_child([&](RunResult& r) {
+      const Scene scene = make_scene(run.scene);
+      if (e == EngineId::impulse) run_impulse(scene, run, r);
+#ifdef IMPULSE_BENCH_HAVE_BOX3D
+      else run_box3d(scene, run, r);
+#endif
+    });
+  };
+  const bool progress = isatty(2);
+  std::printf("%-5s %-14s %-9s %10s %9s %9s %10s %9s %6s\n", "round", "scene", "run", "impulse", "sub-steps", "peak MiB", "Box3D", "peak MiB", "ratio");
+  for (int round = 1; round <= rounds; ++round)
+    for (size_t k = 0; k < scenes.size(); ++k) {
+      const DuelScene& d = scenes[k];
+      if (progress) std::fprintf(stderr, "\r[round %d] %s ...        ", round, d.scene);
+      Measured mi, mb;
+      if (round % 2 == 1) mi = run_one(d, EngineId::impulse), mb = run_one(d, EngineId::box3d);
+      else mb = run_one(d, EngineId::box3d), mi = run_one(d, EngineId::impulse);
+      if (progress) std::fprintf(stderr, "\r%50s\r", "");
+      if (!mi.result.ok || !mb.result.ok) {
+        std::printf("%-5d %-14s failed: %s\n", round, d.scene, !mi.result.ok ? mi.result.error : mb.result.error);
+        return 1;
+      }
+      best_impulse[k].keep(mi);
+      best_box3d[k].keep(mb);
+      std::printf("%-5d %-14s %-9s %10.3f %9.1f %9.1f %10.3f %9.1f %6.2f\n", round, d.scene, run_length(d.steps).c_str(), mi.result.median_ms,
+                  mi.result.substeps, mi.peak_mib, mb.result.median_ms, mb.peak_mib, mi.result.median_ms / mb.result.median_ms);
+      std::fflush(stdout);
+    }
+
+  std::printf("\nGoal 3, one thread each: impulse's fastest median over Box3D's (the sub-step's cost beside it)\n");
+  bool met_all = true;
+  const DuelBest* small = nullptr;
+  const DuelBest* large = nullptr;
+  const DuelBest* large_box3d = nullptr;
+  for (size_t k = 0; k < scenes.size(); ++k) {
+    const DuelScene& d = scenes[k];
+    const RunResult& i = best_impulse[k].m.result;
+    const RunResult& b = best_box3d[k].m.result;
+    const double ratio = i.median_ms / b.median_ms;
+    const bool large_pyramid = std::string(d.scene) == "large-pyramid";
+    const bool holds = large_pyramid ? stands(i) : i.top_drift < 0 || std::max(i.top_drift, i.any_drift) < 0.01;
+    const bool met = ratio <= d.most_ratio && holds;
+    met_all = met_all && met;
+    std::printf("  %-14s %-9s impulse %8.3f (%4.1f sub-steps, %.3f a sub-step", d.scene, run_length(d.steps).c_str(), i.median_ms,
+                i.substeps, i.median_ms / std::max(i.substeps, 1.0));
+    if (i.top_drift >= 0) std::printf(", %s %.4f m", large_pyramid ? (stands(i) ? "stands" : "falls") : stack_verdict(i), std::max(i.top_drift, i.any_drift));
+    std::printf(")  Box3D %8.3f (%.3f a sub-step", b.median_ms, b.median_ms / std::max(b.substeps, 1.0));
+    if (b.top_drift >= 0) std::printf(", %s %.4f m", large_pyramid ? (stands(b) ? "stands" : "falls") : stack_verdict(b), std::max(b.top_drift, b.any_drift));
+    std::printf(")  ratio %5.2f (at most %.1f%s)  %s\n", ratio, d.most_ratio, large_pyramid ? " while ours stands" : "", met ? "met" : "MISSED");
+    if (std::string(d.scene) == "pyramid") small = &best_impulse[k];
+    if (large_pyramid) large = &best_impulse[k], large_box3d = &best_box3d[k];
+  }
+  if (small && large) {
+    const double growth = std::log(large->m.result.median_ms / small->m.result.median_ms) / std::log(5050.0 / 210);
+    std::printf("  growth 210 -> 5050 pyramid: impulse ~n^%.2f (at most n^%.2f)  %s\n", growth, kMostGrowth, growth <= kMostGrowth ? "met" : "MISSED");
+    met_all = met_all && growth <= kMostGrowth;
+  }
+  if (large) {
+    const DuelScene big{"large-pyramid", quick ? 5 : 500, 0};
+    const Measured bullet = in_child([&](RunResult& r) { run_bullet(make_scene(big.scene), {big.scene, big.steps, false}, r); });
+    const double peak = large->most_peak;
+    std::printf("\nGoal 2, memory on the 5050 pyramid (peak of each run's forked child, the largest of the rounds):\n"
+                "  impulse %.1f MiB  Bullet %.1f MiB  Box3D %.1f MiB:  at most Bullet's %s;  at most %.0f MiB %s\n",
+                peak, bullet.peak_mib, large_box3d->most_peak, peak <= bullet.peak_mib ? "met" : "MISSED",
+                kMemoryFinal, peak <= kMemoryFinal ? "met" : "MISSED");
+    met_all = met_all && peak <= bullet.peak_mib && peak <= kMemoryFinal;
+  }
+  std::printf("\nload average %s at the end; cores' round trip %.0f ns; %s\n", load_average().c_str(), core_round_trip_ns(),
+              met_all ? "every goal met" : "not every goal met");
+  return 0;
+}
+
 int usage(const char* program, FILE* to) {
   std::fprintf(to,
-               "usage: %s [--quick] [--scene NAME]... [--threads N] [--impulse-only] [--box3d-substeps N]\n"
+               "usage: %s [--quick] [--scene NAME]... [--threads N] [--impulse-only] [--box3d-substeps N] [--duel [--rounds N]]\n"
                "  --quick        every run cut to 30 steps (large-pyramid: 5), for a smoke test\n"
                "  --scene NAME   only this scene (repeatable): stack-10, stack-20, pyramid, large-pyramid, boxes, spheres\n"
                "  --threads N    impulse's world.threads: N always share (default 0: one per core, shared while faster)\n"
                "  --impulse-only impulse alone, without Bullet and Box3D (to compare two builds of impulse)\n"
                "  --box3d-substeps N  Box3D's sub-steps a step (default 4, its own; more make its contacts stiffer)\n"
+               "  --duel         impulse and Box3D on one thread each, interleaved rounds, the fastest kept; issue 44's goals\n"
+               "  --rounds N     --duel's rounds (default 3)\n"
+               "examples: %s --duel            (about 3 minutes)\n"
+               "          %s --impulse-only --threads 1 --scene pyramid   (one build against another, run in turn)\n"
                "The default is the whole table of ../shared/bench/SCENES.md; it takes several minutes.\n",
-               program);
+               program, program, program);
   return to == stderr ? 2 : 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false;
+  bool quick = false, duel_mode = false;
+  int rounds = 3;
   std::set<std::string> only;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -358,11 +480,17 @@ int main(int argc, char** argv) {
 #else
       (void)substeps;  // no Box3D in this build: its rows say so
 #endif
+    } else if (arg == "--duel") {
+      duel_mode = true;
+    } else if (arg == "--rounds" && i + 1 < argc) {
+      rounds = std::max(1, std::atoi(argv[++i]));
     } else if (arg == "--impulse-only") {
       impulse_only = true;
     } else if (arg == "-h" || arg == "--help") return usage(argv[0], stdout);
     else return usage(argv[0], stderr);
   }
+
+  if (duel_mode) return duel(rounds, quick, only);
 
   std::vector<Run> runs;
   std::set<std::tuple<std::string, int, bool>> seen;

@@ -129,6 +129,7 @@ std::string bullet_description();  // version and precision
 void run_box3d(const Scene& scene, const Run& run, RunResult& out);
 // Box3D's sub-steps per step (4, its default; --box3d-substeps: the same solver made stiffer).
 extern int box3d_substeps;
+extern int box3d_workers;  // 0: as many as impulse's team has threads (ThreadTeam::default_size())
 std::string box3d_description();  // version, sub-steps, workers, precision
 
 }  // namespace impulse::bench

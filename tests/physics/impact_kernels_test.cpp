@@ -86,7 +86,6 @@ TEST(ImpactGeometry, ASpheresPointIsBelowItsCentreHoweverItMovesAndSpins) {
   m.radius_a = radius;
   m.turns_a = false, m.turns_b = false;
   ContactConstraint c;
-  c.normal = m.normal;
   c.anchor_a = Vec3(0, -radius, 0);             // at the step's start, the ball over the origin
   c.anchor_b = Vec3::Zero();                    // the ground's point, from its centre at the origin
   BodyState ball, ground;
