@@ -106,10 +106,12 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
 
   // 1, 2. The hits, found at the geometry of the sub-step's start; then again at the moment the
   // first of them meets, where the impulses act.
+  ContactAnchors anchors[kMaxManifoldPoints];
+  anchors_in_lane(block, l, m, anchors);
   Real separation[kMaxManifoldPoints];
   bool apart = true;  // every point: a landing comes from apart
   for (int i = 0; i < m.count; ++i) {
-    separation[i] = impact_separation(m, points[i], sa, sb);
+    separation[i] = impact_separation(m, anchors[i], sa, sb);
     apart = apart && separation[i] > kTouching;
   }
   if (!can_bounce && !apart) return false;
@@ -134,7 +136,7 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   };
   // Closing fast but not meeting in this sub-step: the rows at its start, so that the soft
   // contact's speculative rows, which may close the gap and no more, see the pair as the bounce does.
-  const ImpactGeometry now = impact_geometry(m, points, sa, ia, sb, ib, 0);
+  const ImpactGeometry now = impact_geometry(m, anchors, sa, ia, sb, ib, 0);
   if (!find_hits(now)) {
     write_impact_rows(place, now, nullptr, separation, solver_bodies, true);
     return false;
@@ -150,7 +152,7 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
   const bool spheres = m.radius_a > 0 && m.radius_b > 0;
   bool first[kMaxManifoldPoints] = {};
   for (int i = 0; i < m.count; ++i) first[i] = spheres && hit[i] && hits[i].tau == first_meeting;
-  const ImpactGeometry g = impact_geometry(m, points, sa, ia, sb, ib, first_meeting);
+  const ImpactGeometry g = impact_geometry(m, anchors, sa, ia, sb, ib, first_meeting);
   if (!find_hits(g, first, first_meeting)) return false;
   write_impact_rows(place, g, hit, separation, solver_bodies, true);
 
@@ -210,7 +212,7 @@ bool ContactSolver::bounce_lane(int place, SolverBodies& solver_bodies, Real h) 
     if (!hit[i]) continue;
     bounced += impulse[i];
     m.hit_points |= uint8_t(1u << i);
-    impact_shift_[m.first + i] = g.moved_a + g.ra[i] - points[i].anchor_a;
+    impact_shift_[m.first + i] = g.moved_a + g.ra[i] - anchors[i].anchor_a;
   }
 
   // 4. Friction: the manifold's rows at the points that meet, within mu times the bounce, solved
@@ -248,7 +250,6 @@ void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const 
   const auto [index, l] = lane_of_place_[place];
   ManifoldLanes& block = lanes_[index];
   ManifoldConstraint& m = manifolds_[place];
-  ContactConstraint* points = &constraints_[m.first];
   PointLanes* rows = &lane_points_[block.first_point];
   const BodyState& sa = solver_bodies.states[m.a];
   const BodyState& sb = solver_bodies.states[m.b];
@@ -260,7 +261,7 @@ void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const 
     m.normal = g.normal;
     // Neither turns (spheres): the solver's separation is (dp_a - dp_b + anchor_a - anchor_b) . n + adjusted.
     for (int i = 0; i < m.count; ++i)
-      rows[i].adjusted_separation[l] = separation[i] - (sa.dp - sb.dp + points[i].anchor_a - points[i].anchor_b).dot(m.normal);
+      rows[i].adjusted_separation[l] = separation[i] - (sa.dp - sb.dp + lane(rows[i].anchor_a, l) - lane(rows[i].anchor_b, l)).dot(m.normal);
     set_lane(block.normal, l, m.normal);
     set_lane(block.tangent1, l, m.tangent1);
     set_lane(block.tangent2, l, m.tangent2);
@@ -277,6 +278,13 @@ void ContactSolver::write_impact_rows(int place, const ImpactGeometry& g, const 
                                   sa.inv_mass, sb.inv_mass, &g.inv_inertia_a, &g.inv_inertia_b};
   if (normal_rows) set_rows(block, rows, l, rows_geometry);
   else set_friction_rows(block, l, rows_geometry);
+}
+
+void ContactSolver::anchors_in_lane(const ManifoldLanes& block, int l, const ManifoldConstraint& m, ContactAnchors* anchors) const {
+  for (int i = 0; i < m.count; ++i) {
+    const PointLanes& p = lane_points_[block.first_point + i];
+    anchors[i] = {lane(p.anchor_a, l), lane(p.anchor_b, l), p.adjusted_separation[l], constraints_[m.first + i].feature};
+  }
 }
 
 bool ContactSolver::bounce_manifolds(int place, int width, SolverBodies& solver_bodies, Real h) {

@@ -30,17 +30,23 @@ constexpr Real kMaxHertzPerSubstepRate = Real(1) / 6;
 
 constexpr int kMaxManifoldPoints = 4;  // the collision routines reduce every pair to four
 
-// One contact point. What its manifold's points share (the normal, the tangents, the materials) is
-// the manifold's alone.
-struct ContactConstraint {
-  int a = -1, b = -1;                  // slots
-  uint32_t feature = 0;                // the contact's, to find it again next step
-  Vec3 anchor_a, anchor_b;             // contact point relative to each centre, at step start
+// One contact point where the surfaces meet, at the step's start: each body's anchor (the point
+// relative to its centre) and the separation along the normal less the anchors' part. Built from
+// the narrow phase's contact by prepare(), kept in the lanes (contact_lanes.h) during the sub-steps.
+struct ContactAnchors {
+  Vec3 anchor_a = Vec3::Zero(), anchor_b = Vec3::Zero();
   Real adjusted_separation = 0;        // separation - dot(anchor_a - anchor_b, normal)
+  uint32_t feature = 0;                // the contact's (manifold.h)
+};
+
+// One contact point's impulses, what the records, the loads and the next step's warm start read.
+// Its anchors and rows are in the lanes; what its manifold's points share (the normal, the
+// tangents, the materials) in the manifold.
+struct ContactConstraint {
+  uint32_t feature = 0;                // the contact's, to find it again next step
   Real normal_mass = 0;                // 1 / eq. 13's denominator, at the step's start
-  // The impulses. After prepare(): the warm start; during the sub-steps the packed lanes hold the
-  // current ones (contact_lanes.h); after store_impulses(): the last sub-step's, and the sums over
-  // the whole step for the records.
+  // After prepare(): the warm start; during the sub-steps the packed lanes hold the current ones;
+  // after store_impulses(): the last sub-step's, and the sums over the whole step for the records.
   Real normal_impulse = 0;
   Real total_normal_impulse = 0, total_tangent_impulse1 = 0, total_tangent_impulse2 = 0;
 };

@@ -3,6 +3,7 @@
 // coupling, friction at their centroid), last step's impulses found again by pair and feature, all
 // packed for the sweeps; and at the end of the step the impulses kept for the next.
 #include "physics/contact_solver.h"
+#include "physics/step_buffer.h"
 #include "physics/manifold.h"
 #include "physics/normal_impulse.h"
 #include "physics/restitution.h"
@@ -21,15 +22,13 @@ uint64_t pair_key(int a, int b) {
   return (uint64_t(uint32_t(std::min(a, b))) << 33) | (uint64_t(uint32_t(std::max(a, b))) << 1) | uint64_t(a > b);
 }
 
-// One contact point's constraint, without its warm start.
-ContactConstraint make_constraint(const Contact& contact, const std::vector<Body>& bodies, const std::vector<int>& slots) {
-  ContactConstraint c;
-  c.a = slots[contact.body_a];
-  c.b = slots[contact.body_b];
-  c.feature = contact.feature;
+// A contact point's anchors, at the step's start.
+ContactAnchors anchors_of(const Contact& contact, const std::vector<Body>& bodies) {
+  ContactAnchors c;
   c.anchor_a = contact.point - bodies[contact.body_a].position;
   c.anchor_b = contact.point - bodies[contact.body_b].position;
   c.adjusted_separation = contact.separation - (c.anchor_a - c.anchor_b).dot(contact.normal);
+  c.feature = contact.feature;
   return c;
 }
 
@@ -91,11 +90,11 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   const Real warm_scale = stored_h_ > 0 ? h / stored_h_ : 1;
   h_ = h;
   substeps_ = 0;
-  manifolds_.resize(order.size());
-  constraints_.resize(contacts.size());
-  constraint_of_contact_.resize(contacts.size());
-  first_of_place_.resize(order.size());
-  pairs_.resize(order.size());
+  resize_for_step(manifolds_, order.size());
+  resize_for_step(constraints_, contacts.size());
+  resize_for_step(constraint_of_contact_, contacts.size());
+  resize_for_step(first_of_place_, order.size());
+  resize_for_step(pairs_, order.size());
   for (size_t place = 0, next = 0; place < order.size(); ++place) {
     const auto [first, end] = groups_[order[place]];
     first_of_place_[place] = int(next);
@@ -104,21 +103,21 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   }
   // Blocks of two manifolds side by side where the schedule paired them, else of one.
   world_slot_ = int(solver_bodies.states.size()) - 1;
-  lane_of_place_.resize(order.size());
+  resize_for_step(lane_of_place_, order.size());
   int blocks = 0, points = 0;
   for (int place = 0; place < int(order.size()); ++blocks) {
     const int width = schedule_.paired(place) ? 2 : 1;
     for (int l = 0; l < width; ++l) lane_of_place_[place + l] = {blocks, l};
     place += width;
   }
-  lanes_.resize(blocks);
+  resize_for_step(lanes_, blocks);
   for (int place = 0, block = 0; place < int(order.size()); ++block) {
     lanes_[block].first_point = points;
     points += groups_[order[place]].second - groups_[order[place]].first;
     place += schedule_.paired(place) ? 2 : 1;
   }
-  lane_points_.resize(points);
-  impact_shift_.resize(contacts.size());  // written for the points that bounce (ManifoldConstraint::hit_points)
+  resize_for_step(lane_points_, points);
+  resize_for_step(impact_shift_, contacts.size());  // written for the points that bounce (ManifoldConstraint::hit_points)
   find_previous_pairs();
   // Each thread builds the manifolds it sweeps, from the states and bodies it loaded.
   schedule_.run(*team_, [&](int thread) {
@@ -151,9 +150,12 @@ void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& cont
   // The friction's warm start: last step's manifold of the pair that shares a point with this one
   // (a mesh's pair has one per triangle normal), else its last.
   int friction_from = other_pair - 1;
+  ContactAnchors anchors[kMaxManifoldPoints];
   for (int i = 0; i < m.count; ++i) {
+    anchors[i] = anchors_of(contacts[first + i], bodies);
     ContactConstraint& c = constraints_[m.first + i];
-    c = make_constraint(contacts[first + i], bodies, slots);
+    c = ContactConstraint{};
+    c.feature = anchors[i].feature;
     for (int previous = same_pair; previous != other_pair; ++previous) {
       const ManifoldWarm& pm = previous_warm_manifolds_[previous_pairs_[previous].manifold];
       for (int j = 0; j < pm.count; ++j)
@@ -164,14 +166,14 @@ void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& cont
     }
   }
   ManifoldLanes& block = begin_lanes(place, m);
-  prepare_shared_rows(m, block, lane_of_place_[place].lane, body_a, body_b, solver_bodies);
+  prepare_shared_rows(m, anchors, block, lane_of_place_[place].lane, body_a, body_b, solver_bodies);
   if (same_pair != other_pair) {
     warm_start_friction(m, previous_warm_manifolds_[previous_pairs_[friction_from].manifold]);
     m.tangent_impulse1 *= warm_scale;
     m.tangent_impulse2 *= warm_scale;
     m.twist_impulse *= warm_scale;
   }
-  fill_lanes(place, m);
+  fill_lanes(place, m, anchors);
 }
 
 void set_rows(ManifoldLanes& block, PointLanes* points, int l, const RowGeometry& g, const Real* soft_share) {
@@ -225,7 +227,7 @@ void set_friction_rows(ManifoldLanes& block, int l, const RowGeometry& g) {
 void ContactSolver::find_previous_pairs() {
   auto by_pair = [](const PairPlace& x, const PairPlace& y) { return x.key != y.key ? x.key < y.key : x.manifold < y.manifold; };
   if (!std::is_sorted(previous_pairs_.begin(), previous_pairs_.end(), by_pair)) std::sort(previous_pairs_.begin(), previous_pairs_.end(), by_pair);
-  previous_range_.resize(pairs_.size());
+  resize_for_step(previous_range_, pairs_.size());
   int begin = 0;
   const int count = int(previous_pairs_.size());
   for (size_t k = 0; k < pairs_.size(); ++k) {
@@ -241,12 +243,11 @@ void ContactSolver::find_previous_pairs() {
 
 // The shared parts of a manifold whose points are built, and the rows its lane `l` of `block` is
 // solved with: each point's at its anchors, their coupling, friction at their centroid.
-void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& block, int l, const Body& body_a, const Body& body_b,
-                                        const SolverBodies& solver_bodies) {
+void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, const ContactAnchors* points, ManifoldLanes& block, int l, const Body& body_a,
+                                        const Body& body_b, const SolverBodies& solver_bodies) {
   const BodyState& sa = solver_bodies.states[m.a];
   const BodyState& sb = solver_bodies.states[m.b];
-  ContactConstraint* points = &constraints_[m.first];
-  const ContactConstraint& first = points[0];
+  const ContactAnchors& first = points[0];
   block.can_bounce = block.can_bounce || m.restitution > 0;
   Vec3 centre = Vec3::Zero(), ra[kMaxManifoldPoints], rb[kMaxManifoldPoints];
   for (int i = 0; i < m.count; ++i) {
@@ -261,7 +262,7 @@ void ContactSolver::prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& bl
            {m.normal, m.tangent1, m.tangent2, m.count, ra, rb, centre, centre + (first.anchor_b - first.anchor_a), sa.inv_mass, sb.inv_mass,
             &solver_bodies.inertia[m.a].inv_inertia, &solver_bodies.inertia[m.b].inv_inertia},
            &share);
-  for (int i = 0; i < m.count; ++i) points[i].normal_mass = lanes[i].normal_mass[l];
+  for (int i = 0; i < m.count; ++i) constraints_[m.first + i].normal_mass = lanes[i].normal_mass[l];
   Real twist_radius = 0;
   for (int i = 0; i < m.count; ++i) twist_radius += (points[i].anchor_a - centre).norm() / m.count;
   m.radius_a = body_a.shape.type == ShapeType::sphere ? body_a.shape.radius : 0;
@@ -308,7 +309,7 @@ ManifoldLanes& ContactSolver::begin_lanes(int place, const ManifoldConstraint& m
 
 // The rest of a prepared manifold's lane (prepare_shared_rows() wrote its rows): the shared normal
 // and tangents, the warm start, and the points' anchors and impulses.
-void ContactSolver::fill_lanes(int place, const ManifoldConstraint& m) {
+void ContactSolver::fill_lanes(int place, const ManifoldConstraint& m, const ContactAnchors* anchors) {
   const auto [index, l] = lane_of_place_[place];
   ManifoldLanes& block = lanes_[index];
   set_lane(block.normal, l, m.normal);
@@ -319,12 +320,11 @@ void ContactSolver::fill_lanes(int place, const ManifoldConstraint& m) {
   block.tangent_impulse2[l] = m.tangent_impulse2;
   block.twist_impulse[l] = m.twist_impulse;
   for (int i = 0; i < m.count; ++i) {
-    const ContactConstraint& c = constraints_[m.first + i];
     PointLanes& p = lane_points_[block.first_point + i];
-    set_lane(p.anchor_a, l, c.anchor_a);
-    set_lane(p.anchor_b, l, c.anchor_b);
-    p.adjusted_separation[l] = c.adjusted_separation;
-    p.normal_impulse[l] = c.normal_impulse;
+    set_lane(p.anchor_a, l, anchors[i].anchor_a);
+    set_lane(p.anchor_b, l, anchors[i].anchor_b);
+    p.adjusted_separation[l] = anchors[i].adjusted_separation;
+    p.normal_impulse[l] = constraints_[m.first + i].normal_impulse;
   }
 }
 

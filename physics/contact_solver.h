@@ -106,8 +106,8 @@ class ContactSolver {
   void find_previous_pairs();
   void prepare_manifold(int place, const std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                         const SolverBodies& solver_bodies, Real warm_scale);
-  void prepare_shared_rows(ManifoldConstraint& m, ManifoldLanes& block, int lane, const Body& body_a, const Body& body_b,
-                           const SolverBodies& solver_bodies);
+  void prepare_shared_rows(ManifoldConstraint& m, const ContactAnchors* anchors, ManifoldLanes& block, int lane, const Body& body_a,
+                           const Body& body_b, const SolverBodies& solver_bodies);
   static void warm_start_friction(ManifoldConstraint& m, const ManifoldWarm& previous);
   bool bounce_lane(int place, SolverBodies& solver_bodies, Real h);
   // Whether lane l of `block` pressed nowhere in this sub-step so far (it may be landing).
@@ -120,7 +120,9 @@ class ContactSolver {
                          bool normal_rows);
   int manifold_of_constraint(int constraint) const;
   ManifoldLanes& begin_lanes(int place, const ManifoldConstraint& m);
-  void fill_lanes(int place, const ManifoldConstraint& m);
+  void fill_lanes(int place, const ManifoldConstraint& m, const ContactAnchors* anchors);
+  // Lane l's anchors of the block's points, as prepare() put them there.
+  void anchors_in_lane(const ManifoldLanes& block, int l, const ManifoldConstraint& m, ContactAnchors* anchors) const;
   void copy_back(int place);
   template <int N, bool UseBias>
   void solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies& solver_bodies, Real inv_h);

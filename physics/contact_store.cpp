@@ -2,6 +2,7 @@
 // totals, and after the last one the impulses kept for the records, the next step's warm start and
 // the sub-step estimate (stack_sink.h).
 #include "physics/contact_solver.h"
+#include "physics/step_buffer.h"
 #include "physics/friction.h"
 
 #include <algorithm>
@@ -40,9 +41,9 @@ void ContactSolver::copy_back(int place) {
 void ContactSolver::store_impulses() {
   impulses_stored_ = true;
   stored_h_ = h_;
-  loads_.resize(manifolds_.size());
-  warm_manifolds_.resize(manifolds_.size());
-  warm_points_.resize(constraints_.size());
+  resize_for_step(loads_, manifolds_.size());
+  resize_for_step(warm_manifolds_, manifolds_.size());
+  resize_for_step(warm_points_, constraints_.size());
   schedule_.for_each_place(*team_, [&](int place) {
     copy_back(place);
     const ManifoldConstraint& m = manifolds_[place];

@@ -40,7 +40,7 @@ Mat3 turned_inverse_inertia(const Mat3& inv_inertia, const Quat& dq) {
 
 // x_a - x_b now plus `tau` of their velocities: at the step's start anchor_b - anchor_a (the
 // anchors of one world point).
-Vec3 centres_apart(const ContactConstraint& c, const BodyState& sa, const BodyState& sb, Real tau) {
+Vec3 centres_apart(const ContactAnchors& c, const BodyState& sa, const BodyState& sb, Real tau) {
   return (c.anchor_b - c.anchor_a) + (sa.dp + sa.v * tau) - (sb.dp + sb.v * tau);
 }
 
@@ -71,7 +71,7 @@ bool meets_at(Real separation, Real vn, Real a, Real restitution, Real threshold
   return true;
 }
 
-ImpactGeometry impact_geometry(const ManifoldConstraint& m, const ContactConstraint* points, const BodyState& sa, const BodyInertia& ia,
+ImpactGeometry impact_geometry(const ManifoldConstraint& m, const ContactAnchors* points, const BodyState& sa, const BodyInertia& ia,
                                const BodyState& sb, const BodyInertia& ib, Real tau) {
   ImpactGeometry g;
   g.count = m.count;
@@ -95,7 +95,7 @@ ImpactGeometry impact_geometry(const ManifoldConstraint& m, const ContactConstra
     return g;
   }
   for (int i = 0; i < m.count; ++i) {
-    const ContactConstraint& c = points[i];
+    const ContactAnchors& c = points[i];
     // Each body's surface point at the step's start: the contact point lies midway between them.
     const Real separation = c.adjusted_separation + (c.anchor_a - c.anchor_b).dot(m.normal);
     Vec3 on_a = m.radius_a > 0 ? Vec3(-m.radius_a * m.normal) : Vec3(c.anchor_a + m.normal * (separation / 2));
@@ -109,7 +109,7 @@ ImpactGeometry impact_geometry(const ManifoldConstraint& m, const ContactConstra
   return g;
 }
 
-Real impact_separation(const ManifoldConstraint& m, const ContactConstraint& c, const BodyState& sa, const BodyState& sb) {
+Real impact_separation(const ManifoldConstraint& m, const ContactAnchors& c, const BodyState& sa, const BodyState& sb) {
   if (m.radius_a > 0 && m.radius_b > 0) return centres_apart(c, sa, sb, 0).norm() - m.radius_a - m.radius_b;
   return separation_now(m.normal, c.anchor_a, c.anchor_b, c.adjusted_separation, sa, m.turns_a, sb, m.turns_b);
 }

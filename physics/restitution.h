@@ -69,12 +69,12 @@ struct ImpactGeometry {
 
 // The geometry of manifold `m` (points[0..m.count)) `tau` into the sub-step whose start the
 // states hold.
-ImpactGeometry impact_geometry(const ManifoldConstraint& m, const ContactConstraint* points, const BodyState& sa, const BodyInertia& ia,
+ImpactGeometry impact_geometry(const ManifoldConstraint& m, const ContactAnchors* points, const BodyState& sa, const BodyInertia& ia,
                                const BodyState& sb, const BodyInertia& ib, Real tau);
 
 // A point's separation at the sub-step's start: separation_now(), the solver rows', but for two
 // spheres, whose gap is measured on their line of centres as impact_geometry() takes the normal.
-Real impact_separation(const ManifoldConstraint& m, const ContactConstraint& c, const BodyState& sa, const BodyState& sb);
+Real impact_separation(const ManifoldConstraint& m, const ContactAnchors& c, const BodyState& sa, const BodyState& sb);
 
 // A body moved on by t along its velocity, turned by its angular velocity (back, for t < 0): to
 // the moment of contact, where an impact's impulses act; and back from it along the new velocity.

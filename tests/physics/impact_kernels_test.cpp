@@ -85,7 +85,7 @@ TEST(ImpactGeometry, ASpheresPointIsBelowItsCentreHoweverItMovesAndSpins) {
   m.normal = Vec3::UnitY();
   m.radius_a = radius;
   m.turns_a = false, m.turns_b = false;
-  ContactConstraint c;
+  ContactAnchors c;
   c.anchor_a = Vec3(0, -radius, 0);             // at the step's start, the ball over the origin
   c.anchor_b = Vec3::Zero();                    // the ground's point, from its centre at the origin
   BodyState ball, ground;
