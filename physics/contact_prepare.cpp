@@ -3,10 +3,10 @@
 // coupling, friction at their centroid), last step's impulses found again by pair and feature, all
 // packed for the sweeps; and at the end of the step the impulses kept for the next.
 #include "physics/contact_solver.h"
-#include "physics/step_buffer.h"
 #include "physics/manifold.h"
 #include "physics/normal_impulse.h"
 #include "physics/restitution.h"
+#include "physics/step_buffer.h"
 
 #include <algorithm>
 #include <cmath>

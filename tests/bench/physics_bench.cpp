@@ -444,7 +444,7 @@ int usage(const char* program, FILE* to) {
                "  --box3d-substeps N  Box3D's sub-steps a step (default 4, its own; more make its contacts stiffer)\n"
                "  --duel         impulse and Box3D on one thread each, interleaved rounds, the fastest kept; issue 44's goals\n"
                "  --rounds N     --duel's rounds (default 3)\n"
-               "examples: %s --duel            (about 3 minutes)\n"
+               "examples: %s --duel            (about 6 minutes on this kind of VM)\n"
                "          %s --impulse-only --threads 1 --scene pyramid   (one build against another, run in turn)\n"
                "The default is the whole table of ../shared/bench/SCENES.md; it takes several minutes.\n",
                program, program, program);
