@@ -72,7 +72,7 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   // One stiffness for every contact. Box2D makes contacts with static bodies twice as stiff; so
   // made, a 1 kg box between the ground and a 100 kg box rattles at 0.1-0.3 m/s for ever: its
   // contact with the ground, four times as stiff, and the one above it give it a mode at about
-  // 2.2 times the contacts' frequency, beyond what a sub-step at 1/6 of its rate holds.
+  // 2.2 times the contacts' frequency, beyond what a sub-step at 1/5 of its rate holds.
   softness_ = make_softness(hertz, settings.contact_damping_ratio, h);
   // The constraints are laid out in the sweeps' order: a thread's share is then one block of memory.
   const std::vector<int>& order = schedule_.order();

@@ -2,7 +2,7 @@
 //
 // A soft contact of stiffness k = m (2 pi hertz)^2 gives way by F / k under a load F, and the
 // giving adds up from the ground along every chain of bodies resting on one another: a 20-box
-// stack at 120 Hz sinks 6.6 mm (measured: 6.6). Contacts can be at most a sixth of the sub-step
+// stack at 120 Hz sinks 6.6 mm (measured: 6.6). Contacts can be at most a fifth of the sub-step
 // rate stiff (kMaxHertzPerSubstepRate, contact_constraint.h), so a stack that must sink less needs more sub-steps, and a heap
 // of low piles needs fewer.
 #pragma once

@@ -27,9 +27,10 @@ namespace impulse::physics {
 struct WorldSettings {
   Vec3 gravity{0, -9.81, 0};
   Real time_step = Real(1) / 60;   // s, fixed
-  int substeps = 12;               // solver sub-steps per step at most (Box2D v3's soft step); 12 let
+  int substeps = 12;               // solver sub-steps per step at most (Box2D v3's soft step); 10 let
                                    // the contacts be stiff (120 Hz) enough that a 20-box stack sinks
-                                   // < 1 cm, and still stable (contact_constraint.h)
+                                   // < 1 cm, and still stable (contact_constraint.h); bodies moving
+                                   // into each other too deep take all 12 (moving_overlap)
   int min_substeps = 4;            // at least, when no stack needs more:
   Real stack_sink = 0.007;         // m: as few sub-steps as keep every stack from sinking more than
                                    // this into its soft contacts (stack_sink.h); 0: always `substeps`
