@@ -12,9 +12,8 @@ bool moving_overlap_too_deep(const std::vector<Contact>& contacts, const std::ve
     if (c.separation >= 0) continue;
     const Body& a = bodies[c.body_a];
     const Body& b = bodies[c.body_b];
-    if (!moving(a) && !moving(b)) continue;
     const Real thinnest = 2 * std::min(thinnest_half_size(a.shape), thinnest_half_size(b.shape));
-    if (-c.separation > std::min(overlap, thinnest / 20)) return true;
+    if (-c.separation > std::min(overlap, thinnest / 20) && (moving(a) || moving(b))) return true;
   }
   return false;
 }
