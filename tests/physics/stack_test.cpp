@@ -72,7 +72,7 @@ TEST(Stack, PyramidOf21BoxesStaysStill) {
 }
 
 // A wall one box thick is where too stiff contacts show first: at a quarter of the sub-step rate
-// (Box2D's limit) this pyramid sways, 29 cm within a minute (kMaxHertzPerSubstepRate).
+// (Box2D's limit) this pyramid sways (kMaxHertzPerSubstepRate).
 TEST(Stack, PyramidOf210BoxesStandsSixtySeconds) {
   World world(no_sleep());
   add_ground_box(world);
