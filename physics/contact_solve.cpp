@@ -74,7 +74,7 @@ bool ContactSolver::solve_manifolds(int place, int width, SolverBodies& solver_b
 // and backwards in turn from one sub-step to the next. Then the friction rows (friction.h) at the
 // points' centroid.
 template <int N, bool UseBias>
-void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies& solver_bodies, Real inv_h) {
+IMPULSE_LANES_KERNEL void ContactSolver::solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies& solver_bodies, Real inv_h) {
   std::vector<BodyState>& states = solver_bodies.states;
   BodyState* sa[2] = {&states[block.a[0]], &states[block.a[1]]};
   BodyState* sb[2] = {&states[block.b[0]], &states[block.b[1]]};

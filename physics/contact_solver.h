@@ -125,7 +125,7 @@ class ContactSolver {
   void anchors_in_lane(const ManifoldLanes& block, int l, const ManifoldConstraint& m, ContactAnchors* anchors) const;
   void copy_back(int place);
   template <int N, bool UseBias>
-  void solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies& solver_bodies, Real inv_h);
+  IMPULSE_LANES_KERNEL void solve_lanes(ManifoldLanes& block, Mask2 solved, SolverBodies& solver_bodies, Real inv_h);
 
   std::vector<ContactConstraint> constraints_;
   std::vector<ManifoldConstraint> manifolds_;
