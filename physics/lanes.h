@@ -13,11 +13,12 @@ using Mask2 = long __attribute__((vector_size(16)));  // a comparison's result: 
 
 #define IMPULSE_LANES [[gnu::always_inline]] inline
 
-// A sweep's kernel built twice, for SSE4.2 and for baseline x86-64, the one the CPU has chosen when
-// the program loads: SSE4.1 selects lanes by a mask in one instruction (blendvpd; SSE2 takes three)
-// and compares 64-bit lanes in one (pcmpeqq). Neither has FMA, and the arithmetic is the same
-// instructions: the same bits on every machine. Clang 14 does not clone templates: its builds (the
-// sanitizers') run the baseline code, so the test command checks the determinism constants on both.
+// A sweep's kernel built twice, for SSE4.2 and for baseline x86-64, and the one this CPU can run
+// chosen when the program loads: SSE4.1 selects lanes by a mask in one instruction (blendvpd;
+// SSE2 takes three) and compares 64-bit lanes in one (pcmpeqq). Neither has FMA, and the
+// arithmetic is the same instructions: the same bits on every machine. Clang 14 does not clone
+// templates: its builds (the sanitizers') run the baseline code, so the test command checks the
+// determinism constants on both.
 #if defined(__clang__)
 #define IMPULSE_LANES_KERNEL
 #else
