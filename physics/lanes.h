@@ -13,16 +13,18 @@ using Mask2 = long __attribute__((vector_size(16)));  // a comparison's result: 
 
 #define IMPULSE_LANES [[gnu::always_inline]] inline
 
-// A sweep's kernel built twice, for SSE4.2 and for baseline x86-64, and the one this CPU can run
-// chosen when the program loads: SSE4.1 selects lanes by a mask in one instruction (blendvpd;
-// SSE2 takes three) and compares 64-bit lanes in one (pcmpeqq). Neither has FMA, and the
-// arithmetic is the same instructions: the same bits on every machine. Clang 14 does not clone
-// templates: its builds (the sanitizers') run the baseline code, so the test command checks the
-// determinism constants on both.
+// A sweep's kernel built three times, for AVX2, for SSE4.2 and for baseline x86-64, and the one
+// this CPU can run chosen when the program loads: SSE4.1 selects lanes by a mask in one instruction
+// (blendvpd; SSE2 takes three) and compares 64-bit lanes in one (pcmpeqq); AVX2's encoding gives
+// each instruction three operands, fewer copies. None of them fuses a multiply-add, and the
+// arithmetic is the same instructions on the same 128-bit lanes (-mprefer-vector-width=128,
+// CMakeLists.txt): the same bits on every machine. Clang 14 does not clone templates: its builds
+// (the sanitizers') run the baseline code, so the test command checks the determinism constants on
+// both.
 #if defined(__clang__)
 #define IMPULSE_LANES_KERNEL
 #else
-#define IMPULSE_LANES_KERNEL __attribute__((target_clones("sse4.2", "default")))
+#define IMPULSE_LANES_KERNEL __attribute__((target_clones("avx2", "sse4.2", "default")))
 #endif
 
 IMPULSE_LANES Real2 splat(Real x) { return Real2{x, x}; }
