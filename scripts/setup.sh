@@ -48,6 +48,7 @@ $tests && packages+=(
   lld                                             # tests: the sanitizer builds' linker
   chromium python3                                # tests: the gallery opened in headless Chromium, served by Python's http.server
   slurmctld slurmd slurm-client munge             # tests: the Slurm example (docs/autograders/slurm) on a one-node Slurm
+  qemu-user                                       # tests: the solve's clones for older CPUs run under an emulated one (tests/physics)
 )
 
 command -v npm >/dev/null || packages+=(npm)   # the page's packages (web/), where Node.js came without it
