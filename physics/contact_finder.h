@@ -47,8 +47,8 @@ class ContactFinder {
     bool swapped = false;       // the contact's body_a is the pair's b
   };
   struct Built {
+    Quat relative_orientation = Quat::Identity();    // A^-1 B (first: it aligns to 16 bytes)
     Vec3 relative_position = Vec3::Zero();           // B's centre in A's frame
-    Quat relative_orientation = Quat::Identity();    // A^-1 B
     Vec3 normal = Vec3::Zero();                      // in A's frame, shared by the pair's contacts
     Real margin = -1;                                // the speculative margin they were built with
     int first = 0;                                   // its contacts, in its thread's local_

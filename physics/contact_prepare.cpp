@@ -79,8 +79,6 @@ void ContactSolver::prepare(const std::vector<Contact>& contacts, const std::vec
   // Last step's constraints, if it stored its impulses, are the warm start: found by pair, then
   // by feature. Each thread reads what it built last step.
   if (impulses_stored_) {
-    std::swap(previous_warm_points_, warm_points_);
-    std::swap(previous_warm_manifolds_, warm_manifolds_);
     std::swap(previous_pairs_, pairs_);
   } else {
     previous_pairs_.clear();
@@ -157,10 +155,10 @@ void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& cont
     c = ContactConstraint{};
     c.feature = anchors[i].feature;
     for (int previous = same_pair; previous != other_pair; ++previous) {
-      const ManifoldWarm& pm = previous_warm_manifolds_[previous_pairs_[previous].manifold];
+      const ManifoldWarm& pm = warm_manifolds_[previous_pairs_[previous].manifold];
       for (int j = 0; j < pm.count; ++j)
-        if (previous_warm_points_[pm.first + j].feature == c.feature) {
-          c.normal_impulse = warm_scale * previous_warm_points_[pm.first + j].normal_impulse;
+        if (warm_points_[pm.first + j].feature == c.feature) {
+          c.normal_impulse = warm_scale * warm_points_[pm.first + j].normal_impulse;
           friction_from = previous;
         }
     }
@@ -168,7 +166,7 @@ void ContactSolver::prepare_manifold(int place, const std::vector<Contact>& cont
   ManifoldLanes& block = begin_lanes(place, m);
   prepare_shared_rows(m, anchors, block, lane_of_place_[place].lane, body_a, body_b, solver_bodies);
   if (same_pair != other_pair) {
-    warm_start_friction(m, previous_warm_manifolds_[previous_pairs_[friction_from].manifold]);
+    warm_start_friction(m, warm_manifolds_[previous_pairs_[friction_from].manifold]);
     m.tangent_impulse1 *= warm_scale;
     m.tangent_impulse2 *= warm_scale;
     m.twist_impulse *= warm_scale;

@@ -145,7 +145,7 @@ class ContactSolver {
   std::vector<PairPlace> pairs_;
   // What the warm start needs of a step, small and apart from the constraints (the lookups then
   // read a line or two): per point, its feature and impulse; per manifold, its points and friction.
-  // This step's (written by store_impulses()) and last step's.
+  // Last step's, which prepare() reads; store_impulses() writes this step's over them.
   struct PointWarm {
     uint32_t feature = 0;
     Real normal_impulse = 0;
@@ -157,8 +157,8 @@ class ContactSolver {
     Vec3 friction_impulse = Vec3::Zero();
     Real twist_impulse = 0;
   };
-  std::vector<PointWarm> warm_points_, previous_warm_points_;
-  std::vector<ManifoldWarm> warm_manifolds_, previous_warm_manifolds_;
+  std::vector<PointWarm> warm_points_;
+  std::vector<ManifoldWarm> warm_manifolds_;
   std::vector<PairPlace> previous_pairs_;
   std::vector<std::pair<int, int>> previous_range_;
   bool impulses_stored_ = false;  // store_impulses() since the last prepare()
