@@ -20,7 +20,8 @@ using Mask2 = long __attribute__((vector_size(16)));  // a comparison's result: 
 // arithmetic is the same instructions on the same 128-bit lanes (-mprefer-vector-width=128,
 // CMakeLists.txt): the same bits on every machine. Clang 14 does not clone templates: its builds
 // (the sanitizers') run the baseline code, so the test command checks the determinism constants on
-// both. Other CPUs than x86-64 build it once.
+// both, and on GCC's other clones under an emulated CPU (tests/physics/CMakeLists.txt). Other CPUs
+// than x86-64 build it once.
 #if defined(__x86_64__) && !defined(__clang__)
 #define IMPULSE_LANES_KERNEL __attribute__((target_clones("avx2", "sse4.2", "default")))
 #else
